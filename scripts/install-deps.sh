@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# Installs every Debian package texsynth needs to build, test and run its demo.
+# Idempotent: packages already present are skipped, apt is only called when something is missing.
+set -euo pipefail
+
+PACKAGES=(
+  # toolchain
+  build-essential cmake ninja-build pkg-config git
+  # libraries
+  libeigen3-dev libtbb-dev libstb-dev libopenexr-dev libimath-dev zlib1g-dev
+  libnanoflann-dev libfaiss-dev libcgal-dev libopenvdb-dev libboost-iostreams-dev libblosc-dev libtinygltf-dev
+  libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
+  # real data: exemplars, meshes, malformed models; a peer synthesizer for comparisons
+  gimp-data libcgal-demo assimp-testmodels gmic
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#PACKAGES[@]} packages present"
+else
+  SUDO=""
+  if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+  echo "install-deps: installing ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  $SUDO apt-get update -qq
+  $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+# libcgal-demo ships its meshes inside a tarball; extract the ones texsynth uses.
+DATA_DIR="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/.data"
+MESHES=(bunny00.off elephant.off armadillo.off cow.off dino.off pig.off fandisk.off sphere.off cube.off)
+if [ ! -f "$DATA_DIR/meshes/.complete" ]; then
+  mkdir -p "$DATA_DIR/meshes"
+  tar -xzf /usr/share/doc/libcgal-dev/data.tar.gz -C "$DATA_DIR/meshes" --strip-components=2 \
+    $(printf 'data/meshes/%s ' "${MESHES[@]}")
+  touch "$DATA_DIR/meshes/.complete"
+  echo "install-deps: extracted ${#MESHES[@]} CGAL meshes into $DATA_DIR/meshes"
+fi

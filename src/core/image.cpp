@@ -1,0 +1,63 @@
+#include "texsynth/core/image.h"
+
+#include <cmath>
+
+namespace texsynth {
+
+Image::Image(int w, int h, int c, float fill) : width(w), height(h), channels(c) {
+  if (w < 0 || h < 0 || c < 0) throw ParameterError("image size", "negative dimension");
+  pixels.assign(std::size_t(w) * h * c, fill);
+}
+
+static inline int wrapIndex(int i, int n) {
+  int r = i % n;
+  return r < 0 ? r + n : r;
+}
+
+float Image::wrapped(int x, int y, int c) const { return at(wrapIndex(x, width), wrapIndex(y, height), c); }
+
+void Image::sampleBilinearWrapped(float x, float y, float* out) const {
+  float fx = x - 0.5f, fy = y - 0.5f;
+  float x0f = std::floor(fx), y0f = std::floor(fy);
+  float tx = fx - x0f, ty = fy - y0f;
+  int x0 = wrapIndex(int(x0f), width), y0 = wrapIndex(int(y0f), height);
+  int x1 = wrapIndex(x0 + 1, width), y1 = wrapIndex(y0 + 1, height);
+  const float *p00 = pixel(x0, y0), *p10 = pixel(x1, y0), *p01 = pixel(x0, y1), *p11 = pixel(x1, y1);
+  for (int c = 0; c < channels; ++c) {
+    float top = p00[c] + (p10[c] - p00[c]) * tx;
+    float bottom = p01[c] + (p11[c] - p01[c]) * tx;
+    out[c] = top + (bottom - top) * ty;
+  }
+}
+
+Image Image::channelRange(int first, int count) const {
+  TS_CHECK(first >= 0 && count >= 0 && first + count <= channels);
+  Image out(width, height, count);
+  for (std::size_t p = 0; p < pixelCount(); ++p)
+    for (int c = 0; c < count; ++c) out.pixels[p * count + c] = pixels[p * channels + first + c];
+  return out;
+}
+
+Image Image::withChannels(int count) const {
+  if (count == channels) return *this;
+  TS_CHECK(count >= 1 && count <= 4);
+  Image out(width, height, count);
+  for (std::size_t p = 0; p < pixelCount(); ++p) {
+    const float* src = &pixels[p * channels];
+    float* dst = &out.pixels[p * count];
+    float gray = channels >= 3 ? 0.2126f * src[0] + 0.7152f * src[1] + 0.0722f * src[2] : src[0];
+    bool srcAlpha = channels == 2 || channels == 4;
+    float alpha = srcAlpha ? src[channels - 1] : 1.0f;
+    int colorIn = srcAlpha ? channels - 1 : channels;
+    if (count <= 2) {
+      dst[0] = colorIn >= 3 ? gray : src[0];
+      if (count == 2) dst[1] = alpha;
+    } else {
+      for (int c = 0; c < 3; ++c) dst[c] = colorIn >= 3 ? src[c] : src[0];
+      if (count == 4) dst[3] = alpha;
+    }
+  }
+  return out;
+}
+
+}  // namespace texsynth

@@ -1,0 +1,43 @@
+#include "test_support.h"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "texsynth/core/random.h"
+
+namespace texsynth::test {
+namespace fs = std::filesystem;
+
+TempDir::TempDir() {
+  std::string pattern = (fs::temp_directory_path() / "texsynth-test-XXXXXX").string();
+  if (!::mkdtemp(pattern.data())) throw std::runtime_error("mkdtemp failed");
+  path_ = pattern;
+}
+
+TempDir::~TempDir() {
+  std::error_code ec;
+  fs::remove_all(path_, ec);
+}
+
+void writeBytes(const std::string& path, const std::string& bytes) {
+  std::ofstream out(path, std::ios::binary);
+  out.write(bytes.data(), std::streamsize(bytes.size()));
+}
+
+Image makeTestPattern(int width, int height, unsigned seed) {
+  Image image(width, height, 3);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      float noise = uniform01(hashKey(seed, latticeId(x / 3, y / 3)));
+      float waves = 0.5f + 0.25f * std::sin(0.35f * x + 0.8f * std::sin(0.21f * y));
+      image.at(x, y, 0) = 0.6f * waves + 0.4f * noise;
+      image.at(x, y, 1) = 0.5f + 0.5f * std::sin(0.17f * (x + 2 * y));
+      image.at(x, y, 2) = noise;
+    }
+  return image;
+}
+
+}  // namespace texsynth::test

@@ -1,0 +1,34 @@
+#pragma once
+// Helpers shared by the test executables.
+#include <optional>
+#include <string>
+
+#include "texsynth/core/image.h"
+
+namespace texsynth::test {
+
+// A fresh empty directory under the system temp dir, removed when the object dies.
+class TempDir {
+ public:
+  TempDir();
+  ~TempDir();
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  const std::string& path() const { return path_; }
+  std::string file(const std::string& name) const { return path_ + "/" + name; }
+
+ private:
+  std::string path_;
+};
+
+// Writes raw bytes to a file (for crafting malformed inputs).
+void writeBytes(const std::string& path, const std::string& bytes);
+
+// A small deterministic RGB test pattern with structure at several scales.
+Image makeTestPattern(int width, int height, unsigned seed = 1);
+
+}  // namespace texsynth::test
+
+// Skips the current test when optional real data (a Debian package) is absent.
+#define TS_REQUIRE_DATA(optionalPath)                                              \
+  if (!(optionalPath)) GTEST_SKIP() << "real test data not installed: run scripts/install-deps.sh"
