@@ -1,0 +1,51 @@
+#pragma once
+// Pieces every texsynth subcommand shares: global flags, size parsing, progress, JSON output.
+#include <CLI/CLI.hpp>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "texsynth/core/progress.h"
+
+namespace texsynth::cli {
+
+// Flags accepted by every subcommand (before or after the subcommand name).
+struct GlobalOptions {
+  std::uint64_t seed = 1;
+  int threads = 0;  // 0: all hardware threads
+  bool quiet = false;
+  bool json = false;
+};
+
+// A registered subcommand: its CLI11 parser and what to run once parsing succeeded.
+struct Command {
+  CLI::App* parser = nullptr;
+  std::function<void()> run;
+};
+
+void addGlobalOptions(CLI::App& app, GlobalOptions& globals);
+
+// A progress bar on stderr, or a silent one with --quiet / --json.
+std::unique_ptr<Progress> makeProgress(const GlobalOptions& globals);
+
+// "512x384" or "512" (square). Throws ParameterError naming `flag`.
+struct Size2 {
+  int width = 0, height = 0;
+};
+Size2 parseSize(const std::string& text, const std::string& flag);
+
+// Prints a JSON document on stdout (for --json).
+void printJson(const nlohmann::json& document);
+
+// Short human-readable message on stderr, unless --quiet.
+void say(const GlobalOptions& globals, const std::string& message);
+
+// The subcommands; each lives in its own cmd_<name>.cpp.
+Command registerDemoCommand(CLI::App& app, const GlobalOptions& globals);
+Command registerEvalCommand(CLI::App& app, const GlobalOptions& globals);
+Command registerRenderCommand(CLI::App& app, const GlobalOptions& globals);
+Command registerInfoCommand(CLI::App& app, const GlobalOptions& globals);
+
+}  // namespace texsynth::cli

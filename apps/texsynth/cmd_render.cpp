@@ -1,0 +1,65 @@
+// texsynth render MESH|VOLUME -o view.png: a shaded picture of a mesh, or a slice montage of a volume.
+#include "cli_common.h"
+#include "texsynth/io/file_kind.h"
+#include "texsynth/io/image_io.h"
+#include "texsynth/io/mesh_io.h"
+#include "texsynth/io/volume_io.h"
+#include "texsynth/render/rasterizer.h"
+#include "texsynth/render/slice_montage.h"
+
+namespace texsynth::cli {
+
+Command registerRenderCommand(CLI::App& app, const GlobalOptions& globals) {
+  auto* sub = app.add_subcommand("render",
+                                 "Render a mesh (per-vertex colors if it has them, Lambert + ambient, camera fitted "
+                                 "automatically) or a volume (slices normal to x, y and z) to an image");
+  struct Args {
+    std::string input, output, size = "768";
+    float yaw = 30, pitch = 20;
+    int views = 1, supersample = 2;
+  };
+  auto args = std::make_shared<Args>();
+  sub->add_option("INPUT", args->input, "Mesh (" + readableMeshExtensions() + ") or volume (" +
+                                            readableVolumeExtensions() + ")")
+      ->required();
+  sub->add_option("-o,--output", args->output, "Output image (.png .jpg .exr ...)")->required();
+  sub->add_option("--size", args->size, "Image size of one view, WxH or N")->capture_default_str();
+  sub->add_option("--yaw", args->yaw, "Camera yaw around the vertical axis, degrees")->capture_default_str();
+  sub->add_option("--pitch", args->pitch, "Camera elevation, degrees")->capture_default_str();
+  sub->add_option("--views", args->views, "Views side by side (1 = the given yaw; 4 = yaw, yaw+90, ...)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({1, 2, 3, 4}));
+  sub->add_option("--supersample", args->supersample, "Samples per pixel side (anti-aliasing)")->capture_default_str();
+
+  return {sub, [args, &globals] {
+            // Check the output format before the work, so a typo costs nothing.
+            if (fileKind(args->output) != FileKind::Image)
+              throw ParameterError("--output", "'" + args->output + "' is not an image file name (" +
+                                                   readableImageExtensions() + ")");
+            Image picture;
+            switch (fileKind(args->input)) {
+              case FileKind::Mesh: {
+                Size2 size = parseSize(args->size, "--size");
+                RenderOptions options;
+                options.width = size.width;
+                options.height = size.height;
+                options.yawDegrees = args->yaw;
+                options.pitchDegrees = args->pitch;
+                options.supersample = args->supersample;
+                Mesh mesh = readMesh(args->input);
+                std::vector<std::pair<float, float>> views;
+                for (int v = 0; v < args->views; ++v) views.push_back({args->yaw + 90.0f * v, args->pitch});
+                picture = renderViews(mesh, nullptr, views, options);
+                break;
+              }
+              case FileKind::Volume: picture = sliceMontage(readVolume(args->input)); break;
+              default:
+                throw InputError(args->input, "cannot render this file type; give a mesh (" + readableMeshExtensions() +
+                                                  ") or a volume (" + readableVolumeExtensions() + ")");
+            }
+            writeImage(args->output, picture);
+            say(globals, "wrote " + args->output);
+          }};
+}
+
+}  // namespace texsynth::cli

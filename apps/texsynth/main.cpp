@@ -1,0 +1,66 @@
+// texsynth: example-based texture synthesis from the command line.
+// Parses flags, runs one subcommand, and turns every error into one clear line and an exit code:
+// 1 for bad input or failed output, 2 for bad usage or parameters.
+#include <cstdio>
+#include <vector>
+
+#include "cli_common.h"
+#include "texsynth/core/error.h"
+#include "texsynth/core/parallel.h"
+
+using namespace texsynth;
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "texsynth: example-based texture synthesis for images, solids and surfaces.\n"
+      "Run 'texsynth demo' for a tour on built-in defaults, or 'texsynth SUBCOMMAND --help'."};
+  app.set_help_all_flag("--help-all", "Help for every subcommand");
+  app.require_subcommand(1);
+  cli::GlobalOptions globals;
+  cli::addGlobalOptions(app, globals);
+
+  std::vector<cli::Command> commands = {
+      cli::registerDemoCommand(app, globals),
+      cli::registerEvalCommand(app, globals),
+      cli::registerRenderCommand(app, globals),
+      cli::registerInfoCommand(app, globals),
+  };
+  // Global flags may also follow the subcommand name.
+  for (auto& command : commands) command.parser->fallthrough();
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "texsynth: %s\n", e.what());
+    return 2;
+  }
+
+  try {
+    ThreadLimit limit(globals.threads);
+    for (auto& command : commands)
+      if (command.parser->parsed()) command.run();
+    return 0;
+  } catch (const ParameterError& e) {
+    std::fprintf(stderr, "texsynth: bad parameter %s\n", e.what());
+    return 2;
+  } catch (const Cancelled&) {
+    std::fprintf(stderr, "texsynth: cancelled\n");
+    return 130;
+  } catch (const InternalError& e) {
+    std::fprintf(stderr, "texsynth: %s (this is a bug in texsynth)\n", e.what());
+    return 1;
+  } catch (const Error& e) {
+    std::fprintf(stderr, "texsynth: %s\n", e.what());
+    return 1;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "texsynth: out of memory\n");
+    return 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "texsynth: unexpected error: %s\n", e.what());
+    return 1;
+  }
+}

@@ -1,0 +1,7 @@
+#!/usr/bin/env bash
+# One command on a fresh Debian machine: install dependencies, build, run the whole test suite (ctest).
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+bash scripts/install-deps.sh
+bash scripts/build.sh
+ctest --test-dir build --output-on-failure --timeout 600 -j "$(nproc)"

@@ -1,0 +1,39 @@
+#include "texsynth/io/file_kind.h"
+
+#include <algorithm>
+#include <array>
+#include <string_view>
+
+#include "texsynth/core/atomic_file.h"
+
+namespace texsynth {
+
+static constexpr std::array<std::string_view, 7> kImage = {"png", "jpg", "jpeg", "bmp", "tga", "exr", "pat"};
+static constexpr std::array<std::string_view, 4> kMesh = {"obj", "ply", "off", "stl"};
+static constexpr std::array<std::string_view, 1> kVolume = {"nrrd"};
+
+template <std::size_t N>
+static bool contains(const std::array<std::string_view, N>& list, const std::string& ext) {
+  return std::find(list.begin(), list.end(), ext) != list.end();
+}
+
+template <std::size_t N>
+static std::string join(const std::array<std::string_view, N>& list) {
+  std::string text;
+  for (auto ext : list) text += (text.empty() ? "." : " .") + std::string(ext);
+  return text;
+}
+
+FileKind fileKind(const std::string& path) {
+  std::string ext = fileExtension(path);
+  if (contains(kImage, ext)) return FileKind::Image;
+  if (contains(kMesh, ext)) return FileKind::Mesh;
+  if (contains(kVolume, ext)) return FileKind::Volume;
+  return FileKind::Unknown;
+}
+
+std::string readableImageExtensions() { return join(kImage); }
+std::string readableMeshExtensions() { return join(kMesh); }
+std::string readableVolumeExtensions() { return join(kVolume); }
+
+}  // namespace texsynth

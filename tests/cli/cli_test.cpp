@@ -1,0 +1,126 @@
+// End-to-end tests of the texsynth binary: what a user sees (exit codes, one-line errors, files).
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "test_support.h"
+#include "texsynth/core/atomic_file.h"
+#include "texsynth/core/data_paths.h"
+#include "texsynth/io/image_io.h"
+#include "texsynth/io/mesh_io.h"
+
+using namespace texsynth;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct RunResult {
+  int exitCode = -1;
+  std::string out, err;
+};
+
+RunResult runTexsynth(const std::string& arguments, const test::TempDir& dir) {
+  std::string outFile = dir.file("stdout.txt"), errFile = dir.file("stderr.txt");
+  std::string command = std::string(TEXSYNTH_BINARY) + " " + arguments + " >" + outFile + " 2>" + errFile + " </dev/null";
+  int status = std::system(command.c_str());
+  RunResult r;
+  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = readFileBytes(outFile);
+  r.err = readFileBytes(errFile);
+  return r;
+}
+
+int lineCount(const std::string& text) {
+  int lines = 0;
+  for (char c : text) lines += c == '\n';
+  return lines;
+}
+
+}  // namespace
+
+TEST(Cli, HelpListsSubcommands) {
+  test::TempDir dir;
+  RunResult r = runTexsynth("--help", dir);
+  EXPECT_EQ(r.exitCode, 0);
+  for (const char* name : {"demo", "eval", "render", "info", "--seed", "--threads", "--quiet"})
+    EXPECT_NE(r.out.find(name), std::string::npos) << name;
+  EXPECT_EQ(runTexsynth("eval --help", dir).exitCode, 0);
+}
+
+TEST(Cli, BadUsageExitsTwoWithOneLine) {
+  test::TempDir dir;
+  RunResult r = runTexsynth("frobnicate", dir);
+  EXPECT_EQ(r.exitCode, 2);
+  r = runTexsynth("", dir);
+  EXPECT_EQ(r.exitCode, 2);
+  r = runTexsynth("render " + dir.file("x.off") + " -o out.png --size 0x5", dir);
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  r = runTexsynth("info a.png --threads -3", dir);
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+}
+
+TEST(Cli, MissingFileExitsOneNamingIt) {
+  test::TempDir dir;
+  std::string missing = dir.file("no-such-exemplar.png");
+  RunResult r = runTexsynth("info " + missing, dir);
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find(missing), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("does not exist"), std::string::npos) << r.err;
+}
+
+TEST(Cli, BrokenImageIsOneClearLine) {
+  test::TempDir dir;
+  test::writeBytes(dir.file("broken.png"), "\x89PNG\r\n\x1a\nthis is not really a png");
+  RunResult r = runTexsynth("info " + dir.file("broken.png"), dir);
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("broken.png"), std::string::npos) << r.err;
+}
+
+TEST(Cli, InfoDescribesImageAsJson) {
+  test::TempDir dir;
+  writeImage(dir.file("pattern.png"), test::makeTestPattern(40, 30));
+  RunResult r = runTexsynth("info " + dir.file("pattern.png") + " --json", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("\"width\": 40"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"height\": 30"), std::string::npos) << r.out;
+}
+
+TEST(Cli, EvalOfExemplarAgainstItselfIsPerfect) {
+  test::TempDir dir;
+  writeImage(dir.file("ex.png"), test::makeTestPattern(48, 48));
+  RunResult r = runTexsynth("eval " + dir.file("ex.png") + " " + dir.file("ex.png") + " --json", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("\"coherence\": 0.0"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"completeness\": 0.0"), std::string::npos) << r.out;
+}
+
+TEST(Cli, RenderWritesImageAndFailedRenderKeepsOldFile) {
+  test::TempDir dir;
+  Mesh quad;
+  quad.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  quad.triangles = {{0, 1, 2}, {0, 2, 3}};
+  quad.computeNormals();
+  writeMesh(dir.file("quad.ply"), quad);
+  RunResult r = runTexsynth("render " + dir.file("quad.ply") + " -o " + dir.file("view.png") + " --size 64 --quiet", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  Image view = readImage(dir.file("view.png"));
+  EXPECT_EQ(view.width, 64);
+  std::string before = readFileBytes(dir.file("view.png"));
+  test::writeBytes(dir.file("bad.off"), "OFF\n3 1 0\n0 0 0\n1 0 0\n");  // truncated
+  r = runTexsynth("render " + dir.file("bad.off") + " -o " + dir.file("view.png"), dir);
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_EQ(readFileBytes(dir.file("view.png")), before);
+}
+
+TEST(Cli, DemoRunsOnDefaultsAndWritesReport) {
+  test::TempDir dir;
+  RunResult r = runTexsynth("demo -o " + dir.file("demo") + " --quiet", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  for (const char* name : {"report.md", "report.json", "exemplar.png", "gaussian_stack.png", "mesh.png"})
+    EXPECT_TRUE(fs::exists(dir.file(std::string("demo/") + name))) << name;
+}
