@@ -2,6 +2,8 @@
 
 #include <charconv>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <iostream>
 
 #include "texsynth/core/error.h"
@@ -41,6 +43,13 @@ Size2 parseSize(const std::string& text, const std::string& flag) {
 }
 
 void printJson(const nlohmann::json& document) { std::cout << document.dump(2) << std::endl; }
+
+std::string defaultCacheDirectory() {
+  if (const char* dir = std::getenv("TEXSYNTH_CACHE"); dir && *dir) return dir;
+  if (const char* dir = std::getenv("XDG_CACHE_HOME"); dir && *dir) return std::string(dir) + "/texsynth";
+  if (const char* home = std::getenv("HOME"); home && *home) return std::string(home) + "/.cache/texsynth";
+  return (std::filesystem::temp_directory_path() / "texsynth-cache").string();
+}
 
 void say(const GlobalOptions& globals, const std::string& message) {
   if (!globals.quiet) std::fprintf(stderr, "%s\n", message.c_str());

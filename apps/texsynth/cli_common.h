@@ -39,6 +39,10 @@ Size2 parseSize(const std::string& text, const std::string& flag);
 // Prints a JSON document on stdout (for --json).
 void printJson(const nlohmann::json& document);
 
+// Where exemplar analyses are cached: $TEXSYNTH_CACHE, else $XDG_CACHE_HOME/texsynth,
+// else ~/.cache/texsynth, else a texsynth directory under the system temp directory.
+std::string defaultCacheDirectory();
+
 // Short human-readable message on stderr, unless --quiet.
 void say(const GlobalOptions& globals, const std::string& message);
 

@@ -4,7 +4,7 @@
 #include "texsynth/io/image_io.h"
 #include "texsynth/io/mesh_io.h"
 #include "texsynth/io/volume_io.h"
-#include "texsynth/render/rasterizer.h"
+#include "texsynth/render/render_mesh.h"
 #include "texsynth/render/slice_montage.h"
 
 namespace texsynth::cli {

@@ -1,7 +1,6 @@
 #include "demo_fallbacks.h"
 
 #include <cmath>
-#include <map>
 
 #include "texsynth/core/random.h"
 
@@ -39,34 +38,6 @@ Image proceduralMarble(int size, std::uint64_t seed) {
       image.at(x, y, 2) = 0.30f + 0.5f * v;
     }
   return image;
-}
-
-Mesh icosphere(int subdivisions) {
-  const float t = (1.0f + std::sqrt(5.0f)) / 2.0f;
-  Mesh mesh;
-  mesh.positions = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-                    {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
-  mesh.triangles = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-                    {11, 10, 2}, {10, 7, 6}, {7, 1, 8},   {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-                    {3, 8, 9},  {4, 9, 5},  {2, 4, 11},  {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
-  for (int s = 0; s < subdivisions; ++s) {
-    std::map<std::pair<int, int>, int> midpoints;
-    auto midpoint = [&](int a, int b) {
-      auto key = std::minmax(a, b);
-      auto [it, inserted] = midpoints.try_emplace({key.first, key.second}, int(mesh.positions.size()));
-      if (inserted) mesh.positions.push_back(0.5f * (mesh.positions[a] + mesh.positions[b]));
-      return it->second;
-    };
-    std::vector<Vec3i> finer;
-    for (const Vec3i& f : mesh.triangles) {
-      int ab = midpoint(f[0], f[1]), bc = midpoint(f[1], f[2]), ca = midpoint(f[2], f[0]);
-      finer.insert(finer.end(), {{f[0], ab, ca}, {f[1], bc, ab}, {f[2], ca, bc}, {ab, bc, ca}});
-    }
-    mesh.triangles = std::move(finer);
-  }
-  for (Vec3f& p : mesh.positions) p.normalize();
-  mesh.computeNormals();
-  return mesh;
 }
 
 }  // namespace texsynth::cli

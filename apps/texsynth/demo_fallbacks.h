@@ -1,13 +1,12 @@
 #pragma once
-// Built-in stand-ins for the demo when the real data packages (gimp-data, libcgal-demo) are absent.
+// Built-in stand-in for the demo when gimp-data is absent (the mesh stand-in is render's sphere).
+#include <cstdint>
+
 #include "texsynth/core/image.h"
-#include "texsynth/core/mesh.h"
 
 namespace texsynth::cli {
 
 // A veined, marble-like RGB texture from hashed value noise (deterministic, tileable).
 Image proceduralMarble(int size, std::uint64_t seed);
-// A unit icosphere subdivided `subdivisions` times.
-Mesh icosphere(int subdivisions);
 
 }  // namespace texsynth::cli

@@ -1,0 +1,43 @@
+#include "image_layout.h"
+
+#include <algorithm>
+
+namespace texsynth::cli {
+
+void pasteImage(Image& dst, const Image& src, int x0, int y0) {
+  Image converted = src.withChannels(dst.channels);
+  for (int y = 0; y < src.height; ++y)
+    for (int x = 0; x < src.width; ++x) {
+      int tx = x0 + x, ty = y0 + y;
+      if (tx < 0 || ty < 0 || tx >= dst.width || ty >= dst.height) continue;
+      std::copy_n(converted.pixel(x, y), dst.channels, dst.pixel(tx, ty));
+    }
+}
+
+Image sideBySide(const std::vector<Image>& images, int gap) {
+  int width = gap, height = 0;
+  for (const Image& image : images) width += image.width + gap, height = std::max(height, image.height);
+  Image out(width, height + 2 * gap, 3, 1.0f);
+  int x = gap;
+  for (const Image& image : images) {
+    pasteImage(out, image, x, gap);
+    x += image.width + gap;
+  }
+  return out;
+}
+
+Image enlarge(const Image& src, int factor) {
+  Image out(src.width * factor, src.height * factor, src.channels);
+  for (int y = 0; y < out.height; ++y)
+    for (int x = 0; x < out.width; ++x) std::copy_n(src.pixel(x / factor, y / factor), src.channels, out.pixel(x, y));
+  return out;
+}
+
+Image tileImage(const Image& src, int nx, int ny) {
+  Image out(src.width * nx, src.height * ny, src.channels);
+  for (int ty = 0; ty < ny; ++ty)
+    for (int tx = 0; tx < nx; ++tx) pasteImage(out, src, tx * src.width, ty * src.height);
+  return out;
+}
+
+}  // namespace texsynth::cli
