@@ -1,0 +1,38 @@
+#pragma once
+// Volume files: read and write NRRD (attached data, raw or gzip, any endianness); write
+// OpenVDB for Blender/Houdini.
+//
+// NRRD layout: dimension 3 (sizes X Y Z) holds a scalar volume; dimension 4 with the channel
+// axis first (sizes C X Y Z) holds C interleaved channels, which is exactly Volume's layout.
+// Any missing, empty, truncated, malformed or absurd file (a side over 65536, over 2^31
+// values, more data than the file could hold) raises one InputError naming the file and the
+// problem. Writers go through writeAtomically: a failed write never leaves a partial file.
+#include <string>
+
+#include "texsynth/core/volume.h"
+
+namespace texsynth {
+
+// Reads a .nrrd volume. Sample types: uint8, uint16, float (also int8, int16, int32, uint32,
+// double). Integer samples are divided by their type's maximum (uint8 by 255, int16 by 32767
+// ...), so 8/16-bit volumes come back in [0,1] like images; float and double are as stored.
+// Detached data files ("data file:"), "line skip" and "byte skip" are rejected.
+Volume readVolume(const std::string& path);
+
+struct VolumeWriteOptions {
+  bool gzip = true;          // NRRD only: gzip-encode the samples (else raw)
+  bool floatSamples = true;  // NRRD only: 32-bit float samples; false: uint8, clipped to [0,1]
+};
+
+// Writes a volume; the format comes from the extension:
+//   .nrrd  little-endian NRRD0004; 1 channel as dimension 3, else dimension 4 (C X Y Z)
+//   .vdb   OpenVDB: a FloatGrid "density" (Rec. 709 luminance of RGB(A) volumes, else
+//          channel 0; grid class fog volume) and, for 3+ channels, a Vec3SGrid "color"
+//          (channels 0..2). Voxel (x,y,z) is index coordinate (x,y,z); the voxel size is
+//          1/max(nx,ny,nz) with a half-voxel offset, so the volume spans [0,1] along its
+//          longest axis. Voxels equal to 0 stay inactive background. Blender loads these.
+// Throws ParameterError for an unknown extension or an empty volume; OutputError if the file
+// cannot be written.
+void writeVolume(const std::string& path, const Volume& volume, const VolumeWriteOptions& options = {});
+
+}  // namespace texsynth

@@ -1,0 +1,37 @@
+// Volume file dispatch by extension, plus the checks every volume writer shares.
+#include "texsynth/io/volume_io.h"
+
+#include <filesystem>
+
+#include "texsynth/core/atomic_file.h"
+#include "texsynth/core/error.h"
+#include "volume_codecs.h"
+
+namespace texsynth {
+
+Volume readVolume(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw InputError(path, "file does not exist");
+  std::string ext = fileExtension(path);
+  if (ext != "nrrd") throw InputError(path, "unsupported volume format '." + ext + "' (readable: .nrrd)");
+  std::string bytes = readFileBytes(path);
+  if (bytes.empty()) throw InputError(path, "file is empty");
+  return volume_codec::decodeNrrd(path, bytes);
+}
+
+void writeVolume(const std::string& path, const Volume& volume, const VolumeWriteOptions& options) {
+  std::string ext = fileExtension(path);
+  if (ext != "nrrd" && ext != "vdb")
+    throw ParameterError("output file '" + path + "'",
+                         "unsupported volume format '." + ext + "' (writable: .nrrd .vdb)");
+  if (volume.empty()) throw ParameterError("volume", "cannot write an empty volume to '" + path + "'");
+  if (volume.voxels.size() != volume.voxelCount() * volume.channels)
+    throw ParameterError("volume", "voxel buffer size does not match " + std::to_string(volume.nx) + "x" +
+                                       std::to_string(volume.ny) + "x" + std::to_string(volume.nz));
+  if (ext == "nrrd")
+    writeAtomically(path, [&](const std::string& temp) { volume_codec::writeNrrd(temp, path, volume, options); });
+  else
+    writeFileAtomically(path, volume_codec::encodeVdb(path, volume));
+}
+
+}  // namespace texsynth

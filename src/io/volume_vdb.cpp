@@ -1,0 +1,83 @@
+// OpenVDB export for Blender/Houdini: a "density" FloatGrid and, for color volumes, a
+// "color" Vec3SGrid, both built from dense copies of the volume by openvdb::tools.
+// Encoded in memory through io::Stream (which io::File reads back) because io::File
+// ignores write errors: a full disk would silently leave a truncated file.
+#include <openvdb/io/Stream.h>
+#include <openvdb/openvdb.h>
+#include <openvdb/tools/Dense.h>
+
+#include <algorithm>
+#include <mutex>
+#include <sstream>
+#include <vector>
+
+#include "texsynth/core/error.h"
+#include "volume_codecs.h"
+
+namespace texsynth::volume_codec {
+namespace {
+
+void initializeOpenVdb() {
+  static std::once_flag once;
+  std::call_once(once, [] { openvdb::initialize(); });
+}
+
+// Voxel size 1/maxDim, shifted half a voxel so voxel (x,y,z) covers
+// [x, x+1] / maxDim: the whole volume spans [0,1] along its longest axis.
+openvdb::math::Transform::Ptr unitBoxTransform(const Volume& volume) {
+  double voxel = 1.0 / double(std::max({volume.nx, volume.ny, volume.nz}));
+  auto transform = openvdb::math::Transform::createLinearTransform(voxel);
+  transform->postTranslate(openvdb::Vec3d(0.5 * voxel));
+  return transform;
+}
+
+template <typename Grid>
+typename Grid::Ptr gridFromDense(const Volume& volume, std::vector<typename Grid::ValueType>& values,
+                                 const char* name) {
+  using Value = typename Grid::ValueType;
+  openvdb::CoordBBox box(openvdb::Coord(0), openvdb::Coord(volume.nx - 1, volume.ny - 1, volume.nz - 1));
+  openvdb::tools::Dense<Value, openvdb::tools::LayoutXYZ> dense(box, values.data());  // x fastest, like Volume
+  auto grid = Grid::create(openvdb::zeroVal<Value>());
+  openvdb::tools::copyFromDense(dense, *grid, openvdb::zeroVal<Value>(), /*serial=*/false);
+  grid->setName(name);
+  grid->setTransform(unitBoxTransform(volume));
+  return grid;
+}
+
+}  // namespace
+
+std::string encodeVdb(const std::string& path, const Volume& volume) {
+  initializeOpenVdb();
+  try {
+    std::size_t count = volume.voxelCount();
+    int channels = volume.channels;
+    openvdb::GridPtrVec grids;
+    {
+      std::vector<float> density(count);
+      for (std::size_t i = 0; i < count; ++i) {
+        const float* v = &volume.voxels[i * channels];
+        density[i] = channels >= 3 ? 0.2126f * v[0] + 0.7152f * v[1] + 0.0722f * v[2] : v[0];
+      }
+      auto grid = gridFromDense<openvdb::FloatGrid>(volume, density, "density");
+      grid->setGridClass(openvdb::GRID_FOG_VOLUME);
+      grids.push_back(grid);
+    }
+    if (channels >= 3) {
+      std::vector<openvdb::Vec3s> color(count);
+      for (std::size_t i = 0; i < count; ++i) {
+        const float* v = &volume.voxels[i * channels];
+        color[i] = openvdb::Vec3s(v[0], v[1], v[2]);
+      }
+      grids.push_back(gridFromDense<openvdb::Vec3SGrid>(volume, color, "color"));
+    }
+    std::ostringstream bytes(std::ios::binary);
+    openvdb::io::Stream(bytes).write(grids);
+    return std::move(bytes).str();
+  } catch (const Error&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw OutputError(path, std::string("cannot write OpenVDB: ") + e.what());
+  }
+}
+
+}  // namespace texsynth::volume_codec
