@@ -1,0 +1,77 @@
+#include "patch_vectors.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+
+namespace texsynth::eval_detail {
+namespace {
+
+// Enough patches for a stable covariance; more only costs time (the basis needs to be
+// orthonormal for exactness, and good only for speed).
+constexpr std::size_t kMaxCovarianceSamples = 20000;
+
+using RowMajorF = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+void copyPatch(const Image& image, int patchSize, int x, int y, float* out) {
+  const std::size_t rowValues = std::size_t(patchSize) * image.channels;
+  for (int dy = 0; dy < patchSize; ++dy) std::copy_n(image.pixel(x, y + dy), rowValues, out + dy * rowValues);
+}
+
+}  // namespace
+
+PatchBasis computePatchBasis(const Image& image, int patchSize) {
+  PatchBasis basis;
+  basis.patchSize = patchSize;
+  basis.dimensions = patchSize * patchSize * image.channels;
+  basis.stride = (basis.dimensions + kLaneWidth - 1) / kLaneWidth * kLaneWidth;
+  const int columns = image.width - patchSize + 1, rows = image.height - patchSize + 1;
+  const std::size_t count = std::size_t(columns) * rows;
+  const std::size_t step = std::max<std::size_t>(1, count / kMaxCovarianceSamples);
+  const int dims = basis.dimensions;
+
+  Eigen::MatrixXd samples((count + step - 1) / step, dims);
+  std::vector<float> patch(dims);
+  Eigen::Index row = 0;
+  for (std::size_t i = 0; i < count; i += step, ++row) {
+    copyPatch(image, patchSize, int(i % columns), int(i / columns), patch.data());
+    for (int k = 0; k < dims; ++k) samples(row, k) = patch[k];
+  }
+  Eigen::RowVectorXd mean = samples.colwise().mean();
+  samples.rowwise() -= mean;
+  Eigen::MatrixXd covariance = samples.transpose() * samples;
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(covariance);
+
+  basis.mean.assign(mean.data(), mean.data() + dims);
+  basis.rotation.assign(std::size_t(dims) * basis.stride, 0.0f);
+  // Eigen sorts eigenvalues ascending: column j of the rotation is eigenvector dims-1-j.
+  for (int j = 0; j < dims; ++j)
+    for (int k = 0; k < dims; ++k)
+      basis.rotation[std::size_t(k) * basis.stride + j] = float(solver.eigenvectors()(k, dims - 1 - j));
+  return basis;
+}
+
+void rotatePatchRows(const Image& image, const PatchBasis& basis, int firstRow, int rowCount, float* out) {
+  const int columns = image.width - basis.patchSize + 1;
+  const Eigen::Index count = Eigen::Index(columns) * rowCount;
+  RowMajorF centred(count, basis.dimensions);
+  for (int r = 0; r < rowCount; ++r)
+    for (int x = 0; x < columns; ++x) {
+      float* row = centred.row(Eigen::Index(r) * columns + x).data();
+      copyPatch(image, basis.patchSize, x, firstRow + r, row);
+      for (int k = 0; k < basis.dimensions; ++k) row[k] -= basis.mean[k];
+    }
+  Eigen::Map<const RowMajorF> rotation(basis.rotation.data(), basis.dimensions, basis.stride);
+  Eigen::Map<RowMajorF> result(out, count, basis.stride);
+  result.noalias() = centred * rotation;
+}
+
+void rotatePatch(const Image& image, const PatchBasis& basis, int x, int y, float* out) {
+  std::vector<float> centred(basis.dimensions);
+  copyPatch(image, basis.patchSize, x, y, centred.data());
+  for (int k = 0; k < basis.dimensions; ++k) centred[k] -= basis.mean[k];
+  Eigen::Map<const RowMajorF> rotation(basis.rotation.data(), basis.dimensions, basis.stride);
+  Eigen::Map<Eigen::RowVectorXf> result(out, basis.stride);
+  result.noalias() = Eigen::Map<const Eigen::RowVectorXf>(centred.data(), basis.dimensions) * rotation;
+}
+
+}  // namespace texsynth::eval_detail
