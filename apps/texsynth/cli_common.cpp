@@ -13,7 +13,9 @@ namespace texsynth::cli {
 void addGlobalOptions(CLI::App& app, GlobalOptions& globals) {
   app.add_option("--seed", globals.seed, "Random seed; the same seed gives the same bits for any thread count")
       ->capture_default_str();
-  app.add_option("--threads", globals.threads, "Worker threads (0 = all cores)")->capture_default_str()->check(CLI::NonNegativeNumber);
+  app.add_option("--threads", globals.threads, "Worker threads (0 = all cores)")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
   app.add_flag("--quiet,-q", globals.quiet, "No progress bar or messages on stderr");
   app.add_flag("--json", globals.json, "Print machine-readable results as JSON on stdout");
 }
@@ -42,7 +44,9 @@ Size2 parseSize(const std::string& text, const std::string& flag) {
           parsePositive(std::string_view(text).substr(x + 1), flag, text)};
 }
 
-void printJson(const nlohmann::json& document) { std::cout << document.dump(2) << std::endl; }
+void printJson(const nlohmann::json& document) {
+  std::cout << document.dump(2) << std::endl;
+}
 
 std::string defaultCacheDirectory() {
   if (const char* dir = std::getenv("TEXSYNTH_CACHE"); dir && *dir) return dir;

@@ -1,4 +1,4 @@
-// texsynth demo: a tour on built-in defaults. Analyses a real exemplar (GIMP's marble from
+// texsynth demo: a tour on built-in defaults. Analyses a real exemplar (GIMP's pink marble from
 // gimp-data), renders a real mesh (CGAL's bunny from libcgal-demo), measures the plain-tiling
 // baseline the synthesizers must beat, and writes a short report with pictures. Falls back to
 // built-in procedural data when those packages are absent.
@@ -35,7 +35,7 @@ struct DemoArgs {
   int renderSize = 512;
 };
 
-const char* kDefaultPattern = "Stone/marble1.pat";
+const char* kDefaultPattern = "Stone/pink_marble.pat";
 const char* kDefaultMesh = "bunny00.off";
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
@@ -108,13 +108,15 @@ std::string markdownReport(const json& r) {
   md << "# texsynth demo report\n\n";
   md << "## Exemplar\n\n![exemplar](exemplar.png)\n\n";
   md << "- source: `" << r["exemplar"]["source"].get<std::string>() << "`"
-     << (r["exemplar"]["fallback"].get<bool>() ? " (built-in procedural fallback: gimp-data not installed)" : "") << "\n";
+     << (r["exemplar"]["fallback"].get<bool>() ? " (built-in procedural fallback: gimp-data not installed)" : "")
+     << "\n";
   md << "- analysed at " << r["exemplar"]["width"] << "x" << r["exemplar"]["height"] << " pixels\n\n";
-  md << "## Exemplar analysis\n\n![Gaussian stack (top) and first three PCA coordinates (bottom)](gaussian_stack.png)\n\n";
+  md << "## Exemplar analysis\n\n![Gaussian stack (top) and first three PCA coordinates "
+        "(bottom)](gaussian_stack.png)\n\n";
   md << "Gaussian stack levels, coarsest first (top row), and each level's first three PCA coordinates as colours "
-        "(bottom row). Neighborhoods " << r["analysis"]["neighborhood"] << "x" << r["analysis"]["neighborhood"]
-     << ", k = " << r["analysis"]["k"] << " similar neighborhoods per pixel. Analysis took "
-     << r["analysis"]["seconds"].get<double>() << " s"
+        "(bottom row). Neighborhoods "
+     << r["analysis"]["neighborhood"] << "x" << r["analysis"]["neighborhood"] << ", k = " << r["analysis"]["k"]
+     << " similar neighborhoods per pixel. Analysis took " << r["analysis"]["seconds"].get<double>() << " s"
      << (r["analysis"]["cached"].get<bool>() ? " (loaded from the cache)" : "") << ".\n\n";
   md << "| level | spacing h | PCA dims | kept energy |\n|---:|---:|---:|---:|\n";
   for (const auto& level : r["analysis"]["levels"])
@@ -124,7 +126,8 @@ std::string markdownReport(const json& r) {
   md << "- source: `" << r["mesh"]["source"].get<std::string>() << "`"
      << (r["mesh"]["fallback"].get<bool>() ? " (built-in sphere: libcgal-demo meshes not extracted)" : "") << ", "
      << r["mesh"]["vertices"] << " vertices, " << r["mesh"]["triangles"] << " triangles\n";
-  md << "- rendered in " << r["mesh"]["render_seconds"].get<double>() << " s (two views). The second picture maps "
+  md << "- rendered in " << r["mesh"]["render_seconds"].get<double>()
+     << " s (two views). The second picture maps "
         "the exemplar along the three axes, blended by the normal and evaluated per pixel: a projection preview, "
         "not synthesis.\n\n";
   md << "## The baseline to beat\n\nA 2x2 tiling of the exemplar, scored by `texsynth eval`:\n\n";
@@ -152,7 +155,9 @@ void runDemo(const DemoArgs& args, const GlobalOptions& globals) {
                                     : centerCrop(readImage(exemplarPath), args.exemplarSize);
   writeImage(out("exemplar.png"), exemplar);
   report["exemplar"] = {{"source", exemplarFallback ? "procedural marble" : exemplarPath},
-                        {"fallback", exemplarFallback}, {"width", exemplar.width}, {"height", exemplar.height}};
+                        {"fallback", exemplarFallback},
+                        {"width", exemplar.width},
+                        {"height", exemplar.height}};
   say(globals, "exemplar: " + report["exemplar"]["source"].get<std::string>());
 
   // Analysis, through the on-disk cache.
@@ -167,7 +172,9 @@ void runDemo(const DemoArgs& args, const GlobalOptions& globals) {
   json levels = json::array();
   for (int l = 0; l < analysis.levelCount(); ++l) {
     const ExemplarLevel& level = analysis.levels[l];
-    levels.push_back({{"level", l}, {"spacing", level.spacing}, {"dimensions", level.pca.outputDimension},
+    levels.push_back({{"level", l},
+                      {"spacing", level.spacing},
+                      {"dimensions", level.pca.outputDimension},
                       {"kept_energy", level.pca.keptEnergy}});
   }
   report["analysis"] = {{"seconds", analysisSeconds}, {"cached", cached}, {"neighborhood", analysis.neighborhoodSize},
@@ -193,16 +200,20 @@ void runDemo(const DemoArgs& args, const GlobalOptions& globals) {
   progress->end();
   writeImage(out("mesh.png"), plain);
   writeImage(out("mesh_projected.png"), projected);
-  report["mesh"] = {{"source", meshFallback ? "built-in sphere" : meshPath}, {"fallback", meshFallback},
-                    {"vertices", mesh.vertexCount()}, {"triangles", mesh.triangleCount()},
+  report["mesh"] = {{"source", meshFallback ? "built-in sphere" : meshPath},
+                    {"fallback", meshFallback},
+                    {"vertices", mesh.vertexCount()},
+                    {"triangles", mesh.triangleCount()},
                     {"render_seconds", renderSeconds}};
 
   // The plain-tiling baseline.
   MetricOptions metricOptions;
   metricOptions.seed = globals.seed;
   QualityMetrics tiling = evaluateImage(exemplar, tileImage(exemplar, 2, 2), metricOptions);
-  report["tiling_baseline"] = {{"coherence", tiling.coherence}, {"completeness", tiling.completeness},
-                               {"histogram", tiling.histogram}, {"periodicity", tiling.periodicity},
+  report["tiling_baseline"] = {{"coherence", tiling.coherence},
+                               {"completeness", tiling.completeness},
+                               {"histogram", tiling.histogram},
+                               {"periodicity", tiling.periodicity},
                                {"seconds", tiling.seconds}};
 
   writeFileAtomically(out("report.json"), report.dump(2) + "\n");
@@ -214,12 +225,14 @@ void runDemo(const DemoArgs& args, const GlobalOptions& globals) {
 }  // namespace
 
 Command registerDemoCommand(CLI::App& app, const GlobalOptions& globals) {
-  auto* sub = app.add_subcommand("demo",
-                                 "A tour on built-in defaults: analyse a real exemplar (GIMP's marble), render a real "
-                                 "mesh (CGAL's bunny) and write a report with pictures into DIR");
+  auto* sub =
+      app.add_subcommand("demo",
+                         "A tour on built-in defaults: analyse a real exemplar (GIMP's pink marble), render a real "
+                         "mesh (CGAL's bunny) and write a report with pictures into DIR");
   auto args = std::make_shared<DemoArgs>();
   sub->add_option("-o,--output", args->outputDir, "Directory for the report and pictures")->capture_default_str();
-  sub->add_option("--exemplar", args->exemplar, std::string("Exemplar image (default: gimp-data's ") + kDefaultPattern + ")");
+  sub->add_option("--exemplar", args->exemplar,
+                  std::string("Exemplar image (default: gimp-data's ") + kDefaultPattern + ")");
   sub->add_option("--mesh", args->mesh, std::string("Mesh (default: libcgal-demo's ") + kDefaultMesh + ")");
   sub->add_option("--exemplar-size", args->exemplarSize, "Analyse the centre crop of this size")
       ->capture_default_str()
@@ -227,8 +240,8 @@ Command registerDemoCommand(CLI::App& app, const GlobalOptions& globals) {
   sub->add_option("--render-size", args->renderSize, "Size of each rendered view")
       ->capture_default_str()
       ->check(CLI::Range(16, 4096));
-  sub->add_option("--cache", args->cacheDir, "Directory of the exemplar-analysis cache (default: " +
-                                                 defaultCacheDirectory() + ")");
+  sub->add_option("--cache", args->cacheDir,
+                  "Directory of the exemplar-analysis cache (default: " + defaultCacheDirectory() + ")");
   return {sub, [args, &globals] { runDemo(*args, globals); }};
 }
 

@@ -12,8 +12,11 @@ namespace texsynth::cli {
 using nlohmann::json;
 
 static json toJson(const QualityMetrics& m) {
-  return {{"coherence", m.coherence}, {"completeness", m.completeness}, {"histogram", m.histogram},
-          {"periodicity", m.periodicity}, {"seconds", m.seconds}};
+  return {{"coherence", m.coherence},
+          {"completeness", m.completeness},
+          {"histogram", m.histogram},
+          {"periodicity", m.periodicity},
+          {"seconds", m.seconds}};
 }
 
 static void printRow(const char* label, const QualityMetrics& m) {

@@ -30,8 +30,12 @@ static json channelStats(const std::vector<float>& values, int channels) {
 static json describeImage(const std::string& path) {
   ImageFileInfo info = readImageInfo(path);
   Image image = readImage(path);
-  return {{"kind", "image"},         {"format", info.format},     {"width", image.width},
-          {"height", image.height},  {"channels", image.channels}, {"bits_per_channel", info.bitsPerChannel},
+  return {{"kind", "image"},
+          {"format", info.format},
+          {"width", image.width},
+          {"height", image.height},
+          {"channels", image.channels},
+          {"bits_per_channel", info.bitsPerChannel},
           {"channel_stats", channelStats(image.pixels, image.channels)}};
 }
 
@@ -49,8 +53,10 @@ static json describeMesh(const std::string& path) {
 
 static json describeVolume(const std::string& path) {
   Volume volume = readVolume(path);
-  return {{"kind", "volume"},         {"size", {volume.nx, volume.ny, volume.nz}},
-          {"channels", volume.channels}, {"channel_stats", channelStats(volume.voxels, volume.channels)}};
+  return {{"kind", "volume"},
+          {"size", {volume.nx, volume.ny, volume.nz}},
+          {"channels", volume.channels},
+          {"channel_stats", channelStats(volume.voxels, volume.channels)}};
 }
 
 static void printHuman(const std::string& path, const json& d) {
@@ -62,23 +68,32 @@ static void printHuman(const std::string& path, const json& d) {
 Command registerInfoCommand(CLI::App& app, const GlobalOptions& globals) {
   auto* sub = app.add_subcommand("info", "Print what an image, mesh or volume file holds");
   auto path = std::make_shared<std::string>();
-  sub->add_option("FILE", *path, "Image (" + readableImageExtensions() + "), mesh (" + readableMeshExtensions() +
-                                     ") or volume (" + readableVolumeExtensions() + ")")
+  sub->add_option("FILE", *path,
+                  "Image (" + readableImageExtensions() + "), mesh (" + readableMeshExtensions() + ") or volume (" +
+                      readableVolumeExtensions() + ")")
       ->required();
   return {sub, [path, &globals] {
             json d;
             switch (fileKind(*path)) {
-              case FileKind::Image: d = describeImage(*path); break;
-              case FileKind::Mesh: d = describeMesh(*path); break;
-              case FileKind::Volume: d = describeVolume(*path); break;
+              case FileKind::Image:
+                d = describeImage(*path);
+                break;
+              case FileKind::Mesh:
+                d = describeMesh(*path);
+                break;
+              case FileKind::Volume:
+                d = describeVolume(*path);
+                break;
               case FileKind::Unknown:
                 throw InputError(*path, "unknown file type; texsynth reads images (" + readableImageExtensions() +
                                             "), meshes (" + readableMeshExtensions() + ") and volumes (" +
                                             readableVolumeExtensions() + ")");
             }
             d["file"] = *path;
-            if (globals.json) printJson(d);
-            else printHuman(*path, d);
+            if (globals.json)
+              printJson(d);
+            else
+              printHuman(*path, d);
           }};
 }
 

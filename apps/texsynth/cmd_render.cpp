@@ -19,8 +19,8 @@ Command registerRenderCommand(CLI::App& app, const GlobalOptions& globals) {
     int views = 1, supersample = 2;
   };
   auto args = std::make_shared<Args>();
-  sub->add_option("INPUT", args->input, "Mesh (" + readableMeshExtensions() + ") or volume (" +
-                                            readableVolumeExtensions() + ")")
+  sub->add_option("INPUT", args->input,
+                  "Mesh (" + readableMeshExtensions() + ") or volume (" + readableVolumeExtensions() + ")")
       ->required();
   sub->add_option("-o,--output", args->output, "Output image (.png .jpg .exr ...)")->required();
   sub->add_option("--size", args->size, "Image size of one view, WxH or N")->capture_default_str();
@@ -34,8 +34,8 @@ Command registerRenderCommand(CLI::App& app, const GlobalOptions& globals) {
   return {sub, [args, &globals] {
             // Check the output format before the work, so a typo costs nothing.
             if (fileKind(args->output) != FileKind::Image)
-              throw ParameterError("--output", "'" + args->output + "' is not an image file name (" +
-                                                   readableImageExtensions() + ")");
+              throw ParameterError(
+                  "--output", "'" + args->output + "' is not an image file name (" + readableImageExtensions() + ")");
             Image picture;
             switch (fileKind(args->input)) {
               case FileKind::Mesh: {
@@ -52,7 +52,9 @@ Command registerRenderCommand(CLI::App& app, const GlobalOptions& globals) {
                 picture = renderViews(mesh, nullptr, views, options);
                 break;
               }
-              case FileKind::Volume: picture = sliceMontage(readVolume(args->input)); break;
+              case FileKind::Volume:
+                picture = sliceMontage(readVolume(args->input));
+                break;
               default:
                 throw InputError(args->input, "cannot render this file type; give a mesh (" + readableMeshExtensions() +
                                                   ") or a volume (" + readableVolumeExtensions() + ")");

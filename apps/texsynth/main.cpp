@@ -26,7 +26,10 @@ int main(int argc, char** argv) {
       cli::registerInfoCommand(app, globals),
   };
   // Global flags may also follow the subcommand name.
-  for (auto& command : commands) command.parser->fallthrough();
+  for (auto& command : commands) {
+    command.parser->fallthrough();
+    command.parser->footer("Global flags (before or after the subcommand): --seed N, --threads N, --quiet, --json");
+  }
 
   try {
     app.parse(argc, argv);

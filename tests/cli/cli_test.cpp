@@ -22,9 +22,11 @@ struct RunResult {
   std::string out, err;
 };
 
-RunResult runTexsynth(const std::string& arguments, const test::TempDir& dir) {
+// Runs the binary with a private analysis cache; `environment` is prepended (e.g. "TEXSYNTH_DATA=/x").
+RunResult runTexsynth(const std::string& arguments, const test::TempDir& dir, const std::string& environment = "") {
   std::string outFile = dir.file("stdout.txt"), errFile = dir.file("stderr.txt");
-  std::string command = std::string(TEXSYNTH_BINARY) + " " + arguments + " >" + outFile + " 2>" + errFile + " </dev/null";
+  std::string command = "TEXSYNTH_CACHE=" + dir.file("cache") + " " + environment + " " + std::string(TEXSYNTH_BINARY) +
+                        " " + arguments + " >" + outFile + " 2>" + errFile + " </dev/null";
   int status = std::system(command.c_str());
   RunResult r;
   r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -106,7 +108,8 @@ TEST(Cli, RenderWritesImageAndFailedRenderKeepsOldFile) {
   quad.triangles = {{0, 1, 2}, {0, 2, 3}};
   quad.computeNormals();
   writeMesh(dir.file("quad.ply"), quad);
-  RunResult r = runTexsynth("render " + dir.file("quad.ply") + " -o " + dir.file("view.png") + " --size 64 --quiet", dir);
+  RunResult r =
+      runTexsynth("render " + dir.file("quad.ply") + " -o " + dir.file("view.png") + " --size 64 --quiet", dir);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   Image view = readImage(dir.file("view.png"));
   EXPECT_EQ(view.width, 64);
@@ -123,4 +126,31 @@ TEST(Cli, DemoRunsOnDefaultsAndWritesReport) {
   ASSERT_EQ(r.exitCode, 0) << r.err;
   for (const char* name : {"report.md", "report.json", "exemplar.png", "gaussian_stack.png", "mesh.png"})
     EXPECT_TRUE(fs::exists(dir.file(std::string("demo/") + name))) << name;
+  std::string report = readFileBytes(dir.file("demo/report.json"));
+  EXPECT_NE(report.find("periodicity"), std::string::npos);
+  // A second run finds the analysis in the cache.
+  r = runTexsynth("demo -o " + dir.file("demo2") + " --quiet --json", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("\"cached\": true"), std::string::npos) << r.out;
+}
+
+TEST(Cli, DemoFallsBackToBuiltInMeshWithoutData) {
+  test::TempDir dir;
+  fs::create_directories(dir.file("empty-data"));
+  RunResult r = runTexsynth("demo -o " + dir.file("demo") + " --quiet --json --render-size 64", dir,
+                            "TEXSYNTH_DATA=" + dir.file("empty-data"));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("built-in sphere"), std::string::npos) << r.out;
+}
+
+TEST(Cli, SameSeedSameBitsForAnyThreadCount) {
+  test::TempDir dir;
+  RunResult one = runTexsynth("demo -o " + dir.file("t1") + " --quiet --threads 1 --render-size 96", dir);
+  RunResult two = runTexsynth("demo -o " + dir.file("t2") + " --quiet --threads 2 --render-size 96", dir,
+                              "TEXSYNTH_CACHE=" + dir.file("other-cache"));
+  ASSERT_EQ(one.exitCode, 0) << one.err;
+  ASSERT_EQ(two.exitCode, 0) << two.err;
+  for (const char* name : {"gaussian_stack.png", "mesh.png", "mesh_projected.png"})
+    EXPECT_EQ(readFileBytes(dir.file(std::string("t1/") + name)), readFileBytes(dir.file(std::string("t2/") + name)))
+        << name;
 }
