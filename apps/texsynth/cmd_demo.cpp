@@ -45,12 +45,7 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 // The centre `size` x `size` crop (or the whole image if smaller), as RGB.
 Image centerCrop(const Image& image, int size) {
   int w = std::min(size, image.width), h = std::min(size, image.height);
-  Image crop(w, h, 3);
-  Image rgb = image.withChannels(3);
-  int x0 = (image.width - w) / 2, y0 = (image.height - h) / 2;
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) std::copy_n(rgb.pixel(x0 + x, y0 + y), 3, crop.pixel(x, y));
-  return crop;
+  return image.withChannels(3).crop((image.width - w) / 2, (image.height - h) / 2, w, h);
 }
 
 // A level's first three PCA coordinates as colours: what the matcher "sees" of each pixel.
@@ -209,7 +204,7 @@ void runDemo(const DemoArgs& args, const GlobalOptions& globals) {
   // The plain-tiling baseline.
   MetricOptions metricOptions;
   metricOptions.seed = globals.seed;
-  QualityMetrics tiling = evaluateImage(exemplar, tileImage(exemplar, 2, 2), metricOptions);
+  QualityMetrics tiling = evaluateImage(exemplar, exemplar.tiled(2 * exemplar.width, 2 * exemplar.height), metricOptions);
   report["tiling_baseline"] = {{"coherence", tiling.coherence},
                                {"completeness", tiling.completeness},
                                {"histogram", tiling.histogram},

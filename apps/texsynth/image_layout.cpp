@@ -33,11 +33,4 @@ Image enlarge(const Image& src, int factor) {
   return out;
 }
 
-Image tileImage(const Image& src, int nx, int ny) {
-  Image out(src.width * nx, src.height * ny, src.channels);
-  for (int ty = 0; ty < ny; ++ty)
-    for (int tx = 0; tx < nx; ++tx) pasteImage(out, src, tx * src.width, ty * src.height);
-  return out;
-}
-
 }  // namespace texsynth::cli

@@ -12,7 +12,5 @@ void pasteImage(Image& dst, const Image& src, int x, int y);
 Image sideBySide(const std::vector<Image>& images, int gap = 4);
 // Nearest-neighbour enlargement by an integer factor (for showing small exemplars).
 Image enlarge(const Image& src, int factor);
-// The image repeated nx by ny times.
-Image tileImage(const Image& src, int nx, int ny);
 
 }  // namespace texsynth::cli

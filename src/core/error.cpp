@@ -3,7 +3,9 @@
 namespace texsynth {
 
 void failCheck(const char* condition, const char* file, int line, const std::string& message) {
-  std::string text = std::string("internal check failed: ") + condition + " at " + file + ":" + std::to_string(line);
+  // Appended piecewise: GCC 12 warns falsely (-Wrestrict) on a chain of operator+ here.
+  std::string text = "internal check failed: ";
+  text.append(condition).append(" at ").append(file).append(":").append(std::to_string(line));
   if (!message.empty()) text += " (" + message + ")";
   throw InternalError(text);
 }

@@ -1,6 +1,8 @@
 #include "texsynth/core/image.h"
 
+#include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace texsynth {
 
@@ -28,6 +30,24 @@ void Image::sampleBilinearWrapped(float x, float y, float* out) const {
     float bottom = p01[c] + (p11[c] - p01[c]) * tx;
     out[c] = top + (bottom - top) * ty;
   }
+}
+
+Image Image::crop(int x0, int y0, int w, int h) const {
+  if (w <= 0 || h <= 0 || x0 < 0 || y0 < 0 || x0 + w > width || y0 + h > height)
+    throw ParameterError("crop", "window " + std::to_string(w) + "x" + std::to_string(h) + " at (" + std::to_string(x0) +
+                                     "," + std::to_string(y0) + ") does not fit a " + std::to_string(width) + "x" +
+                                     std::to_string(height) + " image");
+  Image out(w, h, channels);
+  for (int y = 0; y < h; ++y) std::copy_n(pixel(x0, y0 + y), std::size_t(w) * channels, out.pixel(0, y));
+  return out;
+}
+
+Image Image::tiled(int w, int h) const {
+  TS_CHECK(!empty());
+  Image out(w, h, channels);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) std::copy_n(pixel(x % width, y % height), channels, out.pixel(x, y));
+  return out;
 }
 
 Image Image::channelRange(int first, int count) const {

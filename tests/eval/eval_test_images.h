@@ -6,23 +6,6 @@
 namespace texsynth::test {
 
 // The w×h window of `image` at (x0, y0).
-inline Image crop(const Image& image, int x0, int y0, int w, int h) {
-  Image out(w, h, image.channels);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
-      for (int c = 0; c < image.channels; ++c) out.at(x, y, c) = image.at(x0 + x, y0 + y, c);
-  return out;
-}
-
-// `tile` repeated to fill w×h (a periodic "synthesis").
-inline Image tiled(const Image& tile, int w, int h) {
-  Image out(w, h, tile.channels);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
-      for (int c = 0; c < tile.channels; ++c) out.at(x, y, c) = tile.at(x % tile.width, y % tile.height, c);
-  return out;
-}
-
 // Independent uniform values in [0,1) per pixel and channel.
 inline Image noise(int w, int h, std::uint64_t seed, int channels = 3) {
   Image out(w, h, channels);

@@ -21,7 +21,7 @@ TEST(GmicPeer, TilingIsFarMorePeriodicThanGmicSynthesis) {
   if (!gmicAvailable()) GTEST_SKIP() << "gmic is not on PATH";
 
   test::TempDir dir;
-  const Image exemplar = test::crop(readImage(*pattern).withChannels(3), 10, 10, 128, 128);
+  const Image exemplar = readImage(*pattern).withChannels(3).crop(10, 10, 128, 128);
   writeImage(dir.file("exemplar.png"), exemplar);
   // One OpenMP thread and a fixed seed make G'MIC's synthesis reproducible.
   const std::string command = "OMP_NUM_THREADS=1 gmic srand 1 " + dir.file("exemplar.png") +
@@ -31,7 +31,7 @@ TEST(GmicPeer, TilingIsFarMorePeriodicThanGmicSynthesis) {
   ASSERT_EQ(synthesized.width, 256);
   ASSERT_EQ(synthesized.height, 256);
 
-  const QualityMetrics tiling = evaluateImage(exemplar, test::tiled(exemplar, 256, 256));
+  const QualityMetrics tiling = evaluateImage(exemplar, exemplar.tiled(256, 256));
   const QualityMetrics gmic = evaluateImage(exemplar, synthesized);
   RecordProperty("tiling_periodicity", std::to_string(tiling.periodicity));
   RecordProperty("gmic_periodicity", std::to_string(gmic.periodicity));

@@ -11,7 +11,6 @@
 namespace texsynth {
 namespace {
 
-using test::crop;
 using test::makeTestPattern;
 
 TEST(EvaluateImage, IdenticalOutputScoresZero) {
@@ -26,8 +25,8 @@ TEST(EvaluateImage, IdenticalOutputScoresZero) {
 
 TEST(EvaluateImage, NoiseScoresWorseThanAShiftedCrop) {
   Image big = makeTestPattern(80, 80, 4);
-  Image exemplar = crop(big, 0, 0, 48, 48);
-  QualityMetrics shifted = evaluateImage(exemplar, crop(big, 14, 9, 48, 48));
+  Image exemplar = big.crop(0, 0, 48, 48);
+  QualityMetrics shifted = evaluateImage(exemplar, big.crop(14, 9, 48, 48));
   QualityMetrics noisy = evaluateImage(exemplar, test::noise(48, 48, 8));
   EXPECT_GT(shifted.coherence, 0.0);
   EXPECT_GT(noisy.coherence, 2 * shifted.coherence);
@@ -48,12 +47,12 @@ TEST(EvaluateImage, ShiftOfTenIsHistogramTen) {
 
 TEST(EvaluateImage, TilingIsPeriodicACropIsNot) {
   Image exemplar = makeTestPattern(64, 64, 6);
-  QualityMetrics tiling = evaluateImage(exemplar, test::tiled(exemplar, 160, 160));
+  QualityMetrics tiling = evaluateImage(exemplar, exemplar.tiled(160, 160));
   EXPECT_GT(tiling.periodicity, 0.5);
   EXPECT_LT(tiling.completeness, 1e-9);  // every exemplar patch appears in the tiling
   // A crop of a larger texture is the ideal "synthesis": it never repeats.
   Image big = makeTestPattern(160, 160, 6);
-  EXPECT_LT(evaluateImage(crop(big, 0, 0, 64, 64), crop(big, 20, 10, 140, 150)).periodicity, 0.05);
+  EXPECT_LT(evaluateImage(big.crop(0, 0, 64, 64), big.crop(20, 10, 140, 150)).periodicity, 0.05);
 }
 
 TEST(EvaluateImage, ConvertsChannelCounts) {
@@ -66,8 +65,8 @@ TEST(EvaluateImage, ConvertsChannelCounts) {
 
 TEST(EvaluateImage, SameMetricsForAnyThreadCount) {
   Image big = makeTestPattern(140, 120, 11);
-  Image exemplar = crop(big, 0, 0, 70, 60);
-  Image output = crop(big, 30, 40, 100, 80);
+  Image exemplar = big.crop(0, 0, 70, 60);
+  Image output = big.crop(30, 40, 100, 80);
   QualityMetrics one, two;
   {
     ThreadLimit limit(1);

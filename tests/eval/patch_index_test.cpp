@@ -12,7 +12,6 @@
 namespace texsynth {
 namespace {
 
-using test::crop;
 using test::makeTestPattern;
 using test::noise;
 using test::scaled;
@@ -48,7 +47,7 @@ void expectExact(const Image& queries, const Image& reference, int size) {
 
 TEST(PatchIndex, NearestMatchesBruteForceOnTexture) {
   Image big = scaled(makeTestPattern(80, 80, 3), 255);
-  expectExact(crop(big, 17, 9, 40, 36), crop(big, 0, 0, 48, 48), 7);
+  expectExact(big.crop(17, 9, 40, 36), big.crop(0, 0, 48, 48), 7);
 }
 
 TEST(PatchIndex, NearestMatchesBruteForceForFarQueries) {
@@ -58,7 +57,7 @@ TEST(PatchIndex, NearestMatchesBruteForceForFarQueries) {
 
 TEST(PatchIndex, NearestMatchesBruteForceOnGrayAndLargePatches) {
   Image gray = scaled(makeTestPattern(50, 50, 9).withChannels(1), 255);
-  expectExact(crop(gray, 5, 5, 30, 30), gray, 9);
+  expectExact(gray.crop(5, 5, 30, 30), gray, 9);
 }
 
 TEST(PatchIndex, IdenticalPatchesAreFoundAtDistanceZero) {
@@ -83,7 +82,7 @@ TEST(PatchIndex, TiesGoToTheLowestPatchIndex) {
 TEST(PatchIndex, WithinMatchesBruteForce) {
   // Two copies of a 24-wide texture side by side plus noise: duplicates at exactly +-24.
   Image tile = scaled(makeTestPattern(24, 30, 4), 255);
-  Image image = test::tiled(tile, 60, 30);
+  Image image = tile.tiled(60, 30);
   for (int y = 0; y < 30; ++y)
     for (int x = 48; x < 60; ++x) image.at(x, y, 0) += 3.0f * float(x % 3);  // near-duplicates
   PatchIndex index(image, 5);

@@ -15,7 +15,7 @@ using test::scaled;
 
 TEST(Periodicity, TilingIsPeriodic) {
   Image tile = scaled(test::makeTestPattern(64, 64, 7), 255);
-  PatchIndex index(test::tiled(tile, 160, 128), 7);
+  PatchIndex index(tile.tiled(160, 128), 7);
   // Every patch repeats at (64, 0) or its opposite; only ones with no room either side miss.
   EXPECT_GT(periodicity(index), 0.9);
 }
@@ -37,7 +37,7 @@ TEST(Periodicity, OverlappingRepeatsDoNotCount) {
 
 TEST(Periodicity, ThresholdDecidesDuplicates) {
   Image tile = scaled(test::makeTestPattern(40, 40, 2), 255);
-  Image image = test::tiled(tile, 80, 40);
+  Image image = tile.tiled(80, 40);
   for (int y = 0; y < 40; ++y)
     for (int x = 40; x < 80; ++x) image.at(x, y, 1) += 3.0f;  // the copy is off by 3 in green
   PatchIndex index(image, 7);
@@ -47,7 +47,7 @@ TEST(Periodicity, ThresholdDecidesDuplicates) {
 }
 
 TEST(Periodicity, DeterministicAcrossThreadsAndSeeded) {
-  Image image = scaled(test::tiled(test::makeTestPattern(50, 50, 5), 130, 120), 255);
+  Image image = scaled(test::makeTestPattern(50, 50, 5).tiled(130, 120), 255);
   for (int i = 0; i < 40; ++i) image.at((i * 37) % 130, (i * 53) % 120, 0) += 60;  // break some repeats
   PatchIndex index(image, 7);
   double one, two;

@@ -32,8 +32,8 @@ void expectSame(const QualityMetrics& a, const QualityMetrics& b) {
 
 TEST(EvaluateVolume, StackedImageMatchesImageMetricsAlongTheStackingAxis) {
   Image big = test::makeTestPattern(80, 80, 3);
-  Image exemplar = test::crop(big, 0, 0, 40, 40);
-  Image output = test::crop(big, 6, 4, 40, 36);  // mostly overlaps the exemplar
+  Image exemplar = big.crop(0, 0, 40, 40);
+  Image output = big.crop(6, 4, 40, 36);  // mostly overlaps the exemplar
   const QualityMetrics image = evaluateImage(exemplar, output);
   for (int axis = 0; axis < 3; ++axis) {
     SCOPED_TRACE(axis);

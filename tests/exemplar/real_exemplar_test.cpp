@@ -10,22 +10,10 @@
 
 using namespace texsynth;
 
-namespace {
-
-Image crop(const Image& image, int x0, int y0, int width, int height) {
-  Image out(width, height, image.channels);
-  for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x)
-      for (int c = 0; c < image.channels; ++c) out.at(x, y, c) = image.at(x0 + x, y0 + y, c);
-  return out;
-}
-
-}  // namespace
-
 TEST(RealExemplar, KdTreeMatchesBruteForceAndIsThreadIndependent) {
   auto path = gimpPattern("Stone/pink_marble.pat");
   TS_REQUIRE_DATA(path);
-  Image exemplar = crop(readImage(*path), 30, 40, 40, 40);
+  Image exemplar = readImage(*path).crop(30, 40, 40, 40);
   AnalysisOptions options;
   options.similarCount = 5;
   options.search.nanoflannEpsilon = 0.0f;

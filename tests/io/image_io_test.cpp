@@ -56,15 +56,7 @@ std::string readBytes(const std::string& path) {
 
 // readImage must throw exactly one InputError that names the file and contains `problem`.
 void expectReadError(const std::string& path, const std::string& problem = "") {
-  try {
-    readImage(path);
-    ADD_FAILURE() << "no error reading " << path;
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.file(), path);
-    EXPECT_NE(std::string(e.what()).find(problem), std::string::npos) << "message: " << e.what();
-  } catch (const std::exception& e) {
-    ADD_FAILURE() << "wrong exception type for " << path << ": " << e.what();
-  }
+  test::expectInputError([&] { readImage(path); }, path, problem);
 }
 
 TEST(ImageIo, PngRoundTripsEightBitForEveryChannelCount) {

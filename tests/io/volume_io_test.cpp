@@ -28,15 +28,7 @@ Volume makeVolume(int nx, int ny, int nz, int channels, unsigned seed = 1) {
 }
 
 void expectReadError(const std::string& path, const std::string& problem = "") {
-  try {
-    readVolume(path);
-    ADD_FAILURE() << "no error reading " << path;
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.file(), path);
-    EXPECT_NE(std::string(e.what()).find(problem), std::string::npos) << "message: " << e.what();
-  } catch (const std::exception& e) {
-    ADD_FAILURE() << "wrong exception type for " << path << ": " << e.what();
-  }
+  test::expectInputError([&] { readVolume(path); }, path, problem);
 }
 
 std::string gzipOf(const std::string& bytes) {

@@ -1,11 +1,13 @@
 #include "test_support.h"
 
+#include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 
+#include "texsynth/core/error.h"
 #include "texsynth/core/random.h"
 
 namespace texsynth::test {
@@ -25,6 +27,18 @@ TempDir::~TempDir() {
 void writeBytes(const std::string& path, const std::string& bytes) {
   std::ofstream out(path, std::ios::binary);
   out.write(bytes.data(), std::streamsize(bytes.size()));
+}
+
+void expectInputError(const std::function<void()>& read, const std::string& path, const std::string& problem) {
+  try {
+    read();
+    ADD_FAILURE() << "no error reading " << path;
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), path);
+    EXPECT_NE(std::string(e.what()).find(problem), std::string::npos) << "message: " << e.what();
+  } catch (const std::exception& e) {
+    ADD_FAILURE() << "wrong exception type for " << path << ": " << e.what();
+  }
 }
 
 Image makeTestPattern(int width, int height, unsigned seed) {

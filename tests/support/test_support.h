@@ -1,5 +1,6 @@
 #pragma once
 // Helpers shared by the test executables.
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -23,6 +24,10 @@ class TempDir {
 
 // Writes raw bytes to a file (for crafting malformed inputs).
 void writeBytes(const std::string& path, const std::string& bytes);
+
+// Expects `read` to throw an InputError naming `path` whose message contains `problem`;
+// any other outcome (no error, another exception type) is a test failure.
+void expectInputError(const std::function<void()>& read, const std::string& path, const std::string& problem = "");
 
 // A small deterministic RGB test pattern with structure at several scales.
 Image makeTestPattern(int width, int height, unsigned seed = 1);

@@ -29,6 +29,11 @@ struct Image {
   // Bilinear lookup at continuous coordinates (pixel centers at integer+0.5), wrapping.
   void sampleBilinearWrapped(float x, float y, float* out) const;
 
+  // The w x h window whose top-left is (x, y); it must lie inside the image.
+  Image crop(int x, int y, int w, int h) const;
+  // A w x h image filled by repeating this one from the origin (a periodic tiling).
+  Image tiled(int w, int h) const;
+
   // The first `count` channels starting at `first`, as a new image.
   Image channelRange(int first, int count) const;
   // Converts to the requested channel count (gray<->RGB, drop/add alpha=1).
