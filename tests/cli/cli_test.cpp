@@ -11,6 +11,9 @@
 #include "texsynth/core/data_paths.h"
 #include "texsynth/io/image_io.h"
 #include "texsynth/io/mesh_io.h"
+#include "texsynth/io/volume_io.h"
+
+#include <nlohmann/json.hpp>
 
 using namespace texsynth;
 namespace fs = std::filesystem;
@@ -153,4 +156,25 @@ TEST(Cli, SameSeedSameBitsForAnyThreadCount) {
   for (const char* name : {"gaussian_stack.png", "mesh.png", "mesh_projected.png"})
     EXPECT_EQ(readFileBytes(dir.file(std::string("t1/") + name)), readFileBytes(dir.file(std::string("t2/") + name)))
         << name;
+}
+
+TEST(Cli, EvalAndRenderAcceptVolumes) {
+  test::TempDir dir;
+  writeImage(dir.file("ex.png"), test::makeTestPattern(24, 24));
+  Image exemplar = readImage(dir.file("ex.png"));  // as 8-bit quantized, like the CLI sees it
+  // A volume of the exemplar stacked along z: its z-normal slices are the exemplar itself.
+  Volume volume(24, 24, 8, 3);
+  for (int z = 0; z < 8; ++z)
+    for (int y = 0; y < 24; ++y)
+      for (int x = 0; x < 24; ++x)
+        for (int c = 0; c < 3; ++c) volume.at(x, y, z, c) = exemplar.at(x, y, c);
+  writeVolume(dir.file("stack.nrrd"), volume);
+  RunResult r = runTexsynth("eval " + dir.file("ex.png") + " " + dir.file("stack.nrrd") + " --json", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  auto report = nlohmann::json::parse(r.out);
+  EXPECT_EQ(report["z"]["coherence"].get<double>(), 0.0);
+  EXPECT_GT(report["x"]["coherence"].get<double>(), 0.0);
+  r = runTexsynth("render " + dir.file("stack.nrrd") + " -o " + dir.file("montage.png"), dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_GT(readImage(dir.file("montage.png")).width, 3 * 24);
 }

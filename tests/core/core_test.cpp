@@ -148,3 +148,14 @@ TEST(AtomicFile, FailedWriteLeavesOldFileIntact) {
   EXPECT_THROW(readFileBytes(dir.file("nope")), InputError);
   EXPECT_EQ(fileExtension("a/b.PNG"), "png");
 }
+
+TEST(Image, CropAndTiling) {
+  Image img = test::makeTestPattern(10, 8);
+  Image window = img.crop(3, 2, 4, 5);
+  EXPECT_EQ(window.width, 4);
+  EXPECT_EQ(window.at(1, 1, 2), img.at(4, 3, 2));
+  EXPECT_THROW(img.crop(8, 0, 4, 4), ParameterError);
+  Image tiled = window.tiled(9, 11);
+  EXPECT_EQ(tiled.at(8, 10, 0), window.at(0, 0, 0));
+  EXPECT_EQ(tiled.at(5, 7, 1), window.at(1, 2, 1));
+}
