@@ -98,6 +98,13 @@ SurfaceColorFunction projectionPreview(const Image& exemplar, const Box3f& bound
   };
 }
 
+// A number for the report: three decimals are plenty for times and metrics.
+std::string fixed3(const json& value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3f", value.get<double>());
+  return text;
+}
+
 std::string markdownReport(const json& r) {
   std::ostringstream md;
   md << "# texsynth demo report\n\n";
@@ -111,12 +118,12 @@ std::string markdownReport(const json& r) {
   md << "Gaussian stack levels, coarsest first (top row), and each level's first three PCA coordinates as colours "
         "(bottom row). Neighborhoods "
      << r["analysis"]["neighborhood"] << "x" << r["analysis"]["neighborhood"] << ", k = " << r["analysis"]["k"]
-     << " similar neighborhoods per pixel. Analysis took " << r["analysis"]["seconds"].get<double>() << " s"
+     << " similar neighborhoods per pixel. Analysis took " << fixed3(r["analysis"]["seconds"]) << " s"
      << (r["analysis"]["cached"].get<bool>() ? " (loaded from the cache)" : "") << ".\n\n";
   md << "| level | spacing h | PCA dims | kept energy |\n|---:|---:|---:|---:|\n";
   for (const auto& level : r["analysis"]["levels"])
     md << "| " << level["level"] << " | " << level["spacing"] << " | " << level["dimensions"] << " | "
-       << level["kept_energy"].get<double>() << " |\n";
+       << fixed3(level["kept_energy"]) << " |\n";
   md << "\n## Mesh\n\n![mesh](mesh.png)\n\n![projection preview](mesh_projected.png)\n\n";
   md << "- source: `" << r["mesh"]["source"].get<std::string>() << "`"
      << (r["mesh"]["fallback"].get<bool>() ? " (built-in sphere: libcgal-demo meshes not extracted)" : "") << ", "
@@ -127,8 +134,9 @@ std::string markdownReport(const json& r) {
         "not synthesis.\n\n";
   md << "## The baseline to beat\n\nA 2x2 tiling of the exemplar, scored by `texsynth eval`:\n\n";
   const auto& m = r["tiling_baseline"];
-  md << "| coherence | completeness | histogram | periodicity |\n|---:|---:|---:|---:|\n| " << m["coherence"] << " | "
-     << m["completeness"] << " | " << m["histogram"] << " | " << m["periodicity"] << " |\n\n";
+  md << "| coherence | completeness | histogram | periodicity |\n|---:|---:|---:|---:|\n| " << fixed3(m["coherence"])
+     << " | " << fixed3(m["completeness"]) << " | " << fixed3(m["histogram"]) << " | " << fixed3(m["periodicity"])
+     << " |\n\n";
   md << "Tiling copies the exemplar, so coherence is near 0, but its periodicity is high: a good synthesis keeps "
         "coherence low and brings periodicity near 0.\n";
   return md.str();
