@@ -30,13 +30,23 @@ else
   $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-# libcgal-demo ships its meshes inside a tarball; extract the ones texsynth uses.
+# libcgal-demo ships its meshes inside a tarball under /usr/share/doc; extract the ones texsynth uses.
+# Minimal images often drop /usr/share/doc at install time (dpkg path-exclude), so fall back to
+# unpacking the package file itself.
 DATA_DIR="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/.data"
 MESHES=(bunny00.off elephant.off armadillo.off cow.off dino.off pig.off fandisk.off sphere.off cube.off)
 if [ ! -f "$DATA_DIR/meshes/.complete" ]; then
+  tarball=/usr/share/doc/libcgal-dev/data.tar.gz
+  unpacked=""
+  if [ ! -f "$tarball" ]; then
+    unpacked=$(mktemp -d)
+    chmod 755 "$unpacked"  # apt downloads as the _apt user
+    (cd "$unpacked" && apt-get download -qq libcgal-demo && dpkg-deb -x libcgal-demo_*.deb root)
+    tarball="$unpacked/root/usr/share/doc/libcgal-dev/data.tar.gz"
+  fi
   mkdir -p "$DATA_DIR/meshes"
-  tar -xzf /usr/share/doc/libcgal-dev/data.tar.gz -C "$DATA_DIR/meshes" --strip-components=2 \
-    $(printf 'data/meshes/%s ' "${MESHES[@]}")
+  tar -xzf "$tarball" -C "$DATA_DIR/meshes" --strip-components=2 $(printf 'data/meshes/%s ' "${MESHES[@]}")
+  [ -n "$unpacked" ] && rm -rf "$unpacked"
   touch "$DATA_DIR/meshes/.complete"
   echo "install-deps: extracted ${#MESHES[@]} CGAL meshes into $DATA_DIR/meshes"
 fi
