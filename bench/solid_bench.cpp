@@ -1,0 +1,94 @@
+// Solid-texture timings: evaluation throughput (points/s, reported as items/s) for each
+// method on 2 threads, and the time to colour the vertices of an ~80K-face mesh (the CGAL
+// bunny, or a UV sphere of similar size when the data is not installed).
+#include <benchmark/benchmark.h>
+
+#include "test_support.h"
+#include "texsynth/core/data_paths.h"
+#include "texsynth/core/parallel.h"
+#include "texsynth/core/random.h"
+#include "texsynth/io/mesh_io.h"
+#include "texsynth/render/primitives.h"
+#include "texsynth/solid/solid_consumers.h"
+#include "texsynth/solid/tile_blend_solid.h"
+#include "texsynth/solid/tile_deform_solid.h"
+
+using namespace texsynth;
+
+namespace {
+
+const Mesh& benchMesh() {
+  static const Mesh mesh = [] {
+    Mesh m = cgalMesh("bunny00.off") ? readMesh(*cgalMesh("bunny00.off")) : makeUvSphereMesh(Vec3f::Zero(), 1, 200, 200);
+    if (m.normals.size() != m.positions.size()) m.computeNormals();
+    return m;
+  }();
+  return mesh;
+}
+
+enum Method { kVolume, kStackZ, kStackAll, kTileBlend };
+
+std::unique_ptr<SolidTexture> makeSolid(int method) {
+  const Image exemplar = test::makeTestPattern(128, 128);
+  const SolidPlacement placement = fitPlacement(benchMesh().bounds(), 128, 3.0f);
+  TileDeformSolidOptions deform;
+  deform.placement = placement;
+  if (method == kTileBlend) {
+    TileBlendSolidOptions blend;
+    blend.placement = placement;
+    return makeTileBlendSolid(exemplar, blend);
+  }
+  if (method == kVolume) {
+    Volume volume(64, 64, 64, 3);
+    for (std::size_t i = 0; i < volume.voxels.size(); ++i) volume.voxels[i] = uniform01(hashKey(1, i));
+    return makeTileDeformSolid(volume, deform);
+  }
+  deform.stacking = method == kStackZ ? StackAxes::Z : StackAxes::All;
+  return makeStackedTileDeformSolid(exemplar, deform);
+}
+
+const char* methodName(int method) {
+  static const char* names[] = {"volume", "stack-z", "stack-xyz", "tile-blend"};
+  return names[method];
+}
+
+// 2^20 points on a 128 x 128 x 64 grid over the mesh's box, in raster order (as slices,
+// volumes and render rows ask), each with a random unit normal (all three planes used).
+void BM_SolidEvaluate(benchmark::State& state) {
+  ThreadLimit limit(2);
+  auto solid = makeSolid(int(state.range(0)));
+  const Box3f box = benchMesh().bounds();
+  const int count = 1 << 20;
+  std::vector<Vec3f> points(count), normals(count);
+  for (int i = 0; i < count; ++i) {
+    const Vec3f cell((i & 127) + 0.5f, ((i >> 7) & 127) + 0.5f, (i >> 14) + 0.5f);
+    points[i] = box.min + cell.cwiseQuotient(Vec3f(128, 128, 64)).cwiseProduct(box.size());
+    for (int a = 0; a < 3; ++a) normals[i][a] = uniform01(hashKey(3, i, a)) - 0.5f;
+  }
+  for (Vec3f& n : normals) n.normalize();
+  std::vector<float> values(std::size_t(count) * solid->channels());
+  for (auto _ : state) {
+    solid->evaluate(points, normals, values);
+    benchmark::DoNotOptimize(values.data());
+  }
+  state.SetItemsProcessed(state.iterations() * count);
+  state.SetLabel(methodName(int(state.range(0))));
+}
+BENCHMARK(BM_SolidEvaluate)->DenseRange(0, 3)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_ColorMeshVertices(benchmark::State& state) {
+  ThreadLimit limit(2);
+  auto solid = makeSolid(int(state.range(0)));
+  Mesh mesh = benchMesh();
+  for (auto _ : state) {
+    colorMeshVertices(mesh, *solid);
+    benchmark::DoNotOptimize(mesh.colors.data());
+  }
+  state.counters["faces"] = double(mesh.triangleCount());
+  state.SetLabel(methodName(int(state.range(0))));
+}
+BENCHMARK(BM_ColorMeshVertices)->DenseRange(0, 3)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
+
+BENCHMARK_MAIN();
