@@ -1,10 +1,13 @@
 #include "cli_common.h"
 
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <type_traits>
+#include <vector>
 
 #include "texsynth/core/error.h"
 
@@ -42,6 +45,46 @@ Size2 parseSize(const std::string& text, const std::string& flag) {
   }
   return {parsePositive(std::string_view(text).substr(0, x), flag, text),
           parsePositive(std::string_view(text).substr(x + 1), flag, text)};
+}
+
+// Splits "a,b,c" on commas.
+static std::vector<std::string> splitCommas(const std::string& text) {
+  std::vector<std::string> parts;
+  std::size_t start = 0;
+  while (true) {
+    std::size_t comma = text.find(',', start);
+    parts.push_back(text.substr(start, comma - start));
+    if (comma == std::string::npos) return parts;
+    start = comma + 1;
+  }
+}
+
+template <typename T>
+static T parseNumber(const std::string& text, const std::string& flag, const std::string& whole) {
+  T value{};
+  auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc() || end != text.data() + text.size() || text.empty())
+    throw ParameterError(flag, "'" + whole + "' is not a number or list of numbers");
+  if constexpr (std::is_floating_point_v<T>)
+    if (!std::isfinite(value)) throw ParameterError(flag, "'" + whole + "' is not finite");
+  return value;
+}
+
+std::pair<float, float> parseFloatPair(const std::string& text, const std::string& flag) {
+  auto parts = splitCommas(text);
+  if (parts.size() > 2) throw ParameterError(flag, "'" + text + "': give one value or two separated by a comma");
+  float a = parseNumber<float>(parts[0], flag, text);
+  return {a, parts.size() == 2 ? parseNumber<float>(parts[1], flag, text) : a};
+}
+
+Window parseWindow(const std::string& text, const std::string& flag) {
+  auto parts = splitCommas(text);
+  if (parts.size() != 4) throw ParameterError(flag, "'" + text + "': expected X,Y,W,H");
+  Window w{parseNumber<std::int64_t>(parts[0], flag, text), parseNumber<std::int64_t>(parts[1], flag, text),
+           parseNumber<int>(parts[2], flag, text), parseNumber<int>(parts[3], flag, text)};
+  if (w.width <= 0 || w.height <= 0 || w.width > 65536 || w.height > 65536)
+    throw ParameterError(flag, "'" + text + "': W and H must be between 1 and 65536");
+  return w;
 }
 
 void printJson(const nlohmann::json& document) {

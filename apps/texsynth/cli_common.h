@@ -36,6 +36,16 @@ struct Size2 {
 };
 Size2 parseSize(const std::string& text, const std::string& flag);
 
+// "A" or "A,B" (B defaults to A), each a finite number. Throws ParameterError naming `flag`.
+std::pair<float, float> parseFloatPair(const std::string& text, const std::string& flag);
+
+// "X,Y,W,H": a window of an infinite texture (X, Y may be negative; W, H in 1..65536).
+struct Window {
+  std::int64_t x = 0, y = 0;
+  int width = 0, height = 0;
+};
+Window parseWindow(const std::string& text, const std::string& flag);
+
 // Prints a JSON document on stdout (for --json).
 void printJson(const nlohmann::json& document);
 
@@ -51,5 +61,7 @@ Command registerDemoCommand(CLI::App& app, const GlobalOptions& globals);
 Command registerEvalCommand(CLI::App& app, const GlobalOptions& globals);
 Command registerRenderCommand(CLI::App& app, const GlobalOptions& globals);
 Command registerInfoCommand(CLI::App& app, const GlobalOptions& globals);
+Command registerImageCommand(CLI::App& app, const GlobalOptions& globals);
+Command registerSolidCommand(CLI::App& app, const GlobalOptions& globals);
 
 }  // namespace texsynth::cli

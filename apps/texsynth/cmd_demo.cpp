@@ -212,7 +212,8 @@ void runDemo(const DemoArgs& args, const GlobalOptions& globals) {
   // The plain-tiling baseline.
   MetricOptions metricOptions;
   metricOptions.seed = globals.seed;
-  QualityMetrics tiling = evaluateImage(exemplar, exemplar.tiled(2 * exemplar.width, 2 * exemplar.height), metricOptions);
+  QualityMetrics tiling =
+      evaluateImage(exemplar, exemplar.tiled(2 * exemplar.width, 2 * exemplar.height), metricOptions);
   report["tiling_baseline"] = {{"coherence", tiling.coherence},
                                {"completeness", tiling.completeness},
                                {"histogram", tiling.histogram},

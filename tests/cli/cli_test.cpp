@@ -4,8 +4,10 @@
 
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "cli_runner.h"
 #include "test_support.h"
 #include "texsynth/core/atomic_file.h"
 #include "texsynth/core/data_paths.h"
@@ -13,38 +15,12 @@
 #include "texsynth/io/mesh_io.h"
 #include "texsynth/io/volume_io.h"
 
-#include <nlohmann/json.hpp>
-
 using namespace texsynth;
 namespace fs = std::filesystem;
 
-namespace {
-
-struct RunResult {
-  int exitCode = -1;
-  std::string out, err;
-};
-
-// Runs the binary with a private analysis cache; `environment` is prepended (e.g. "TEXSYNTH_DATA=/x").
-RunResult runTexsynth(const std::string& arguments, const test::TempDir& dir, const std::string& environment = "") {
-  std::string outFile = dir.file("stdout.txt"), errFile = dir.file("stderr.txt");
-  std::string command = "TEXSYNTH_CACHE=" + dir.file("cache") + " " + environment + " " + std::string(TEXSYNTH_BINARY) +
-                        " " + arguments + " >" + outFile + " 2>" + errFile + " </dev/null";
-  int status = std::system(command.c_str());
-  RunResult r;
-  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = readFileBytes(outFile);
-  r.err = readFileBytes(errFile);
-  return r;
-}
-
-int lineCount(const std::string& text) {
-  int lines = 0;
-  for (char c : text) lines += c == '\n';
-  return lines;
-}
-
-}  // namespace
+using test::lineCount;
+using test::RunResult;
+using test::runTexsynth;
 
 TEST(Cli, HelpListsSubcommands) {
   test::TempDir dir;

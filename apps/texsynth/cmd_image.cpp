@@ -1,0 +1,150 @@
+// texsynth image EXEMPLAR --method tile-deform|tile-blend: a 2D texture of any size, or any
+// window of the infinite texture, from one exemplar.
+#include <chrono>
+#include <cstdio>
+
+#include "cli_common.h"
+#include "texsynth/image/make_tileable.h"
+#include "texsynth/image/tile_blend.h"
+#include "texsynth/image/tile_deform.h"
+#include "texsynth/io/file_kind.h"
+#include "texsynth/io/image_io.h"
+
+namespace texsynth::cli {
+
+using nlohmann::json;
+
+namespace {
+
+struct ImageArgs {
+  std::string exemplar, output, method = "tile-deform", size = "512", window;
+  std::string tileable = "auto", saveTileable;
+  float seamThreshold = 1.5f;
+  // tile-deform
+  std::string cell = "0", lambda = "0.35", directions = "both";
+  float clamp = 0.45f, noiseFrequency = 0.6f;
+  // tile-blend
+  float tileSize = 0, blendExponent = 2.0f;
+};
+
+DeformDirections parseDirections(const std::string& text) {
+  if (text == "both") return DeformDirections::Both;
+  if (text == "x") return DeformDirections::XOnly;
+  return DeformDirections::YOnly;
+}
+
+// Makes the exemplar tileable when asked, or when its wrap-around seams are visible ("auto").
+Image prepareExemplar(const ImageArgs& args, json& report) {
+  Image exemplar = readImage(args.exemplar);
+  SeamStrength before = measureSeams(exemplar);
+  report["seam_ratio_before"] = before.ratio();
+  bool convert = args.tileable == "always" || (args.tileable == "auto" && before.ratio() > args.seamThreshold);
+  if (convert) {
+    exemplar = makeTileable(exemplar);
+    report["seam_ratio_after"] = measureSeams(exemplar).ratio();
+  }
+  report["made_tileable"] = convert;
+  if (!args.saveTileable.empty()) writeImage(args.saveTileable, exemplar);
+  return exemplar;
+}
+
+void runImage(const ImageArgs& args, const GlobalOptions& globals) {
+  if (fileKind(args.output) != FileKind::Image)
+    throw ParameterError("--output",
+                         "'" + args.output + "' is not an image file name (" + readableImageExtensions() + ")");
+  Window window;
+  if (!args.window.empty()) {
+    window = parseWindow(args.window, "--window");
+  } else {
+    Size2 size = parseSize(args.size, "--size");
+    window.width = size.width, window.height = size.height;
+  }
+  json report = {{"exemplar", args.exemplar}, {"method", args.method}, {"seed", globals.seed}};
+  Image exemplar = prepareExemplar(args, report);
+
+  auto start = std::chrono::steady_clock::now();
+  Image result;
+  if (args.method == "tile-deform") {
+    TileDeformOptions options;
+    std::tie(options.cellWidth, options.cellHeight) = parseFloatPair(args.cell, "--cell");
+    std::tie(options.lambdaX, options.lambdaY) = parseFloatPair(args.lambda, "--lambda");
+    options.maxDisplacement = args.clamp;
+    options.noiseFrequency = args.noiseFrequency;
+    options.directions = parseDirections(args.directions);
+    options.seed = globals.seed;
+    TileDeformTexture texture(exemplar, options);
+    report["cell"] = {texture.cellWidth(), texture.cellHeight()};
+    result = texture.synthesizeWindow(window.x, window.y, window.width, window.height);
+  } else {
+    TileBlendOptions options;
+    options.tileSize = args.tileSize;
+    options.weightExponent = args.blendExponent;
+    options.seed = globals.seed;
+    result = synthesizeTileBlend(exemplar, options, window.x, window.y, window.width, window.height);
+  }
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  writeImage(args.output, result);
+
+  report["window"] = {window.x, window.y, window.width, window.height};
+  report["seconds"] = seconds;
+  report["megapixels_per_second"] = double(window.width) * window.height / 1e6 / std::max(seconds, 1e-9);
+  report["output"] = args.output;
+  if (globals.json) return printJson(report);
+  char line[160];
+  std::snprintf(line, sizeof line, "wrote %s (%dx%d, %s, %.3f s)%s", args.output.c_str(), window.width, window.height,
+                args.method.c_str(), seconds,
+                report["made_tileable"].get<bool>() ? "; exemplar made tileable first" : "");
+  say(globals, line);
+}
+
+}  // namespace
+
+Command registerImageCommand(CLI::App& app, const GlobalOptions& globals) {
+  auto* sub = app.add_subcommand(
+      "image",
+      "Synthesize a 2D texture from an exemplar. Every method is random access: --window X,Y,W,H computes any part of "
+      "the infinite texture alone, bit-identical to the same region of a larger output.\n"
+      "  tile-deform: tile the exemplar and deform a grid over it with Perlin noise (Chen et al.); keeps features "
+      "crisp, suits irregular and near-stochastic textures (marble, stone, bark).\n"
+      "  tile-blend: histogram-preserving tiling and blending (Heitz & Neyret 2018); no visible deformation, keeps "
+      "the exemplar's histogram, suits stochastic textures (granite, sand, noise-like surfaces).");
+  auto args = std::make_shared<ImageArgs>();
+  sub->add_option("EXEMPLAR", args->exemplar, "Exemplar image")->required();
+  sub->add_option("-o,--output", args->output, "Output image (.png .jpg .exr ...)")->required();
+  sub->add_option("--method", args->method, "Synthesis method")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"tile-deform", "tile-blend"}));
+  sub->add_option("--size", args->size, "Output size WxH or N (the window at the origin)")->capture_default_str();
+  sub->add_option("--window", args->window,
+                  "X,Y,W,H: the window of the infinite texture to compute (overrides --size)");
+  sub->add_option("--tileable", args->tileable,
+                  "Make the exemplar tileable first (minimum-error cut across its wrap edges): auto = when its seams "
+                  "are visible (seam ratio above --seam-threshold)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"auto", "always", "never"}));
+  sub->add_option("--seam-threshold", args->seamThreshold,
+                  "Seam ratio (wrap-edge difference / interior difference) above which 'auto' converts")
+      ->capture_default_str();
+  sub->add_option("--save-tileable", args->saveTileable, "Also write the (possibly converted) exemplar here");
+  auto* deform = "tile-deform";
+  sub->add_option("--cell", args->cell,
+                  std::string(deform) + ": grid cell size SX[,SY] in pixels (0 = a quarter of the exemplar)")
+      ->capture_default_str();
+  sub->add_option("--lambda", args->lambda,
+                  std::string(deform) + ": noise factors LX[,LY] (displacement = noise * lambda * cell)")
+      ->capture_default_str();
+  sub->add_option("--clamp", args->clamp, std::string(deform) + ": largest displacement as a fraction of the cell")
+      ->capture_default_str();
+  sub->add_option("--noise-frequency", args->noiseFrequency, std::string(deform) + ": noise periods per grid cell")
+      ->capture_default_str();
+  sub->add_option("--directions", args->directions, std::string(deform) + ": deform both axes, or only x or only y")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"both", "x", "y"}));
+  sub->add_option("--tile-size", args->tileSize, "tile-blend: triangle edge in pixels (0 = half the exemplar)")
+      ->capture_default_str();
+  sub->add_option("--blend-exponent", args->blendExponent, "tile-blend: sharpness of the blend between tiles (>= 1)")
+      ->capture_default_str();
+  return {sub, [args, &globals] { runImage(*args, globals); }};
+}
+
+}  // namespace texsynth::cli

@@ -1,0 +1,248 @@
+// texsynth solid EXEMPLAR --method tile-deform|tile-blend: a solid (3D) texture, shown on a
+// mesh (colored copy, per-pixel render), as slices, or as a whole volume.
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+
+#include "cli_common.h"
+#include "texsynth/core/atomic_file.h"
+#include "texsynth/io/file_kind.h"
+#include "texsynth/io/image_io.h"
+#include "texsynth/io/mesh_io.h"
+#include "texsynth/io/volume_io.h"
+#include "texsynth/render/render_mesh.h"
+#include "texsynth/solid/solid_consumers.h"
+#include "texsynth/solid/tile_blend_solid.h"
+#include "texsynth/solid/tile_deform_solid.h"
+
+namespace texsynth::cli {
+
+using nlohmann::json;
+
+namespace {
+
+struct SolidArgs {
+  std::string exemplar, method = "tile-deform", mesh, render, stats, stack = "xyz";
+  std::vector<std::string> outputs, slices;
+  int resolution = 128, renderSize = 768, views = 2;
+  float tiles = 2.0f, sharpness = 4.0f;
+  bool floatVolume = false;
+  // tile-deform
+  std::string cell = "0", lambda = "0.4";
+  float clamp = 0.45f, noiseScale = 2.5f;
+  // tile-blend
+  float tileSize = 0, blendExponent = 2.0f;
+};
+
+// "z=0.5" -> (axis 2, 0.5).
+std::pair<int, float> parseSlice(const std::string& text) {
+  if (text.size() < 3 || text[1] != '=' || std::string("xyz").find(text[0]) == std::string::npos)
+    throw ParameterError("--slice", "'" + text + "': expected AXIS=POSITION, e.g. z=0.5");
+  float position = parseFloatPair(text.substr(2), "--slice").first;
+  if (position < 0 || position > 1) throw ParameterError("--slice", "'" + text + "': position must be in [0, 1]");
+  return {int(std::string("xyz").find(text[0])), position};
+}
+
+// Three comma-separated values, or one for all three axes.
+Vec3f parseVec3(const std::string& text, const std::string& flag) {
+  std::size_t commas = std::count(text.begin(), text.end(), ',');
+  if (commas == 0) return Vec3f::Constant(parseFloatPair(text, flag).first);
+  if (commas != 2) throw ParameterError(flag, "'" + text + "': give one value or three (X,Y,Z)");
+  auto xy = parseFloatPair(text.substr(0, text.rfind(',')), flag);
+  return {xy.first, xy.second, parseFloatPair(text.substr(text.rfind(',') + 1), flag).first};
+}
+
+StackAxes parseStack(const std::string& text) {
+  if (text == "x") return StackAxes::X;
+  if (text == "y") return StackAxes::Y;
+  if (text == "z") return StackAxes::Z;
+  return StackAxes::All;
+}
+
+// Checks every output name before any work, so a typo costs nothing.
+void checkOutputs(const SolidArgs& args) {
+  std::size_t imageOutputs = 0;
+  for (const std::string& out : args.outputs) {
+    std::string ext = fileExtension(out);
+    bool meshOut = ext == "ply" || ext == "obj" || ext == "glb" || ext == "gltf";
+    bool volumeOut = ext == "nrrd" || ext == "vdb";
+    if (meshOut && args.mesh.empty()) throw ParameterError("--output", "'" + out + "' is a mesh: give --mesh");
+    if (fileKind(out) == FileKind::Image)
+      ++imageOutputs;
+    else if (!meshOut && !volumeOut)
+      throw ParameterError("--output", "'" + out +
+                                           "': unknown output type (.ply .obj .glb .gltf mesh, .png .jpg .exr "
+                                           "slice, .nrrd .vdb volume)");
+  }
+  if (imageOutputs != args.slices.size())
+    throw ParameterError("--slice", std::to_string(args.slices.size()) + " slice(s) but " +
+                                        std::to_string(imageOutputs) +
+                                        " image output(s): give one -o image per --slice, in order");
+  if (!args.render.empty() && args.mesh.empty()) throw ParameterError("--render", "needs --mesh");
+  if (args.outputs.empty() && args.render.empty())
+    throw ParameterError("--output", "nothing to write: give -o (mesh, slice or volume) or --render");
+}
+
+std::unique_ptr<SolidTexture> makeSolid(const SolidArgs& args, const Box3f& box, std::uint64_t seed, json& report) {
+  bool volumeExemplar = fileKind(args.exemplar) == FileKind::Volume;
+  Volume volume;
+  Image image;
+  if (volumeExemplar)
+    volume = readVolume(args.exemplar);
+  else
+    image = readImage(args.exemplar);
+  int tileSide = volumeExemplar ? std::max({volume.nx, volume.ny, volume.nz}) : std::max(image.width, image.height);
+  SolidPlacement placement = fitPlacement(box, tileSide, args.tiles);
+
+  if (args.method == "tile-blend") {
+    if (volumeExemplar) throw ParameterError("--method", "tile-blend takes a 2D exemplar, not a volume");
+    TileBlendSolidOptions options;
+    options.placement = placement;
+    options.tileSize = args.tileSize;
+    options.weightExponent = args.blendExponent;
+    options.blendSharpness = args.sharpness;
+    options.seed = seed;
+    report["variant"] = "triplanar tile-blend";
+    return makeTileBlendSolid(image, options);
+  }
+  TileDeformSolidOptions options;
+  options.placement = placement;
+  Vec3f cell = parseVec3(args.cell, "--cell");
+  for (int a = 0; a < 3; ++a)
+    if (cell[a] == 0) cell[a] = 0.25f * tileSide;  // a quarter of the exemplar, as in 2D
+  options.deformation.cellSize = cell;
+  options.deformation.lambda = parseVec3(args.lambda, "--lambda");
+  options.deformation.clamp = args.clamp;
+  options.deformation.noiseScale = args.noiseScale;
+  options.deformation.seed = seed;
+  options.stacking = parseStack(args.stack);
+  options.blendSharpness = args.sharpness;
+  report["variant"] = volumeExemplar ? "method 1: 3D exemplar" : "method 2: 2D exemplar stacked along " + args.stack;
+  return volumeExemplar ? makeTileDeformSolid(std::move(volume), options)
+                        : makeStackedTileDeformSolid(std::move(image), options);
+}
+
+void runSolid(const SolidArgs& args, const GlobalOptions& globals) {
+  checkOutputs(args);
+  std::vector<std::pair<int, float>> slices;
+  for (const std::string& s : args.slices) slices.push_back(parseSlice(s));
+  json report = {{"exemplar", args.exemplar}, {"method", args.method}, {"seed", globals.seed}};
+  auto clock = std::chrono::steady_clock::now();
+  auto lap = [&clock] {
+    auto now = std::chrono::steady_clock::now();
+    double s = std::chrono::duration<double>(now - clock).count();
+    clock = now;
+    return s;
+  };
+
+  Mesh mesh;
+  Box3f box;
+  box.extend(Vec3f::Zero());
+  box.extend(Vec3f::Ones());  // without a mesh, the unit cube
+  if (!args.mesh.empty()) {
+    mesh = readMesh(args.mesh);
+    box = mesh.bounds();
+  }
+  std::unique_ptr<SolidTexture> solid = makeSolid(args, box, globals.seed, report);
+  report["setup_seconds"] = lap();
+
+  auto progress = makeProgress(globals);
+  progress->begin("solid outputs", std::int64_t(args.outputs.size() + (args.render.empty() ? 0 : 1)));
+  std::size_t nextSlice = 0;
+  for (const std::string& out : args.outputs) {
+    std::string ext = fileExtension(out);
+    if (fileKind(out) == FileKind::Image) {
+      auto [axis, position] = slices[nextSlice++];
+      writeImage(out, sampleSlice(*solid, box, axis, position, args.resolution));
+    } else if (ext == "nrrd" || ext == "vdb") {
+      VolumeWriteOptions volumeOptions;
+      volumeOptions.floatSamples = args.floatVolume;
+      writeVolume(out, sampleVolume(*solid, box, args.resolution), volumeOptions);
+    } else {
+      Mesh colored = mesh;
+      colorMeshVertices(colored, *solid);
+      writeMesh(out, colored);
+    }
+    report["outputs"].push_back({{"file", out}, {"seconds", lap()}});
+    progress->advance(1);
+  }
+  if (!args.render.empty()) {
+    RenderOptions options;
+    options.width = options.height = args.renderSize;
+    std::vector<std::pair<float, float>> views;
+    for (int v = 0; v < args.views; ++v) views.push_back({30.0f + 90.0f * v, 20.0f});
+    SurfaceColorFunction colorAt = surfaceColorFunction(*solid);
+    writeImage(args.render, renderViews(mesh, &colorAt, views, options));
+    report["outputs"].push_back({{"file", args.render}, {"seconds", lap()}});
+    progress->advance(1);
+  }
+  progress->end();
+  if (!args.stats.empty()) writeFileAtomically(args.stats, report.dump(2) + "\n");
+  if (globals.json)
+    printJson(report);
+  else
+    for (const auto& out : report["outputs"])
+      say(globals,
+          "wrote " + out["file"].get<std::string>() + " (" + std::to_string(out["seconds"].get<double>()) + " s)");
+}
+
+}  // namespace
+
+Command registerSolidCommand(CLI::App& app, const GlobalOptions& globals) {
+  auto* sub = app.add_subcommand(
+      "solid",
+      "Synthesize a solid (3D) texture and write it on a mesh, as slices or as a volume. Random access: any point is "
+      "computed alone, so a mesh surface costs only its points.\n"
+      "  tile-deform: tile the exemplar and deform a 3D grid with Perlin noise (Chen et al.). A .nrrd exemplar is "
+      "tiled in 3D (method 1); a 2D exemplar is stacked along x, y or z, or along all three and blended by the "
+      "surface normal, w_i = (n.i)^(2p) (method 2).\n"
+      "  tile-blend: triplanar histogram-preserving tiling and blending (Heitz & Neyret 2018) of a 2D exemplar.\n"
+      "Outputs: -o FILE, as often as needed; the extension says what: .ply .obj .glb .gltf a colored copy of "
+      "--mesh, .png .jpg .exr the next --slice, .nrrd .vdb the volume over the mesh's box (or the unit cube) at "
+      "--resolution.");
+  auto args = std::make_shared<SolidArgs>();
+  sub->add_option("EXEMPLAR", args->exemplar, "2D exemplar image, or a 3D exemplar volume (.nrrd)")->required();
+  sub->add_option("--method", args->method, "Synthesis method")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"tile-deform", "tile-blend"}));
+  sub->add_option("--mesh", args->mesh, "Mesh to texture (.obj .ply .off .stl)");
+  sub->add_option("-o,--output", args->outputs, "Output file(s): colored mesh, slice image(s) or volume");
+  sub->add_option("--slice", args->slices, "AXIS=POSITION in [0,1] across the box, e.g. z=0.5 (one image -o each)");
+  sub->add_option("--resolution", args->resolution, "Voxels along the box's longest side, for slices and volumes")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 4096));
+  sub->add_option("--render", args->render, "Render the textured --mesh (colors evaluated per pixel) to this image");
+  sub->add_option("--render-size", args->renderSize, "Size of each rendered view")
+      ->capture_default_str()
+      ->check(CLI::Range(16, 8192));
+  sub->add_option("--views", args->views, "Rendered views side by side, 90 degrees apart")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 4));
+  sub->add_option("--tiles", args->tiles, "Exemplar tiles across the longest side of the box (texture scale)")
+      ->capture_default_str();
+  sub->add_flag("--float-volume", args->floatVolume, "Write .nrrd volumes as 32-bit floats instead of 8-bit");
+  sub->add_option("--stats", args->stats, "Write timings and settings as JSON here");
+  sub->add_option("--stack", args->stack, "tile-deform with a 2D exemplar: stack along x, y, z or all three (xyz)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"x", "y", "z", "xyz"}));
+  sub->add_option("--sharpness", args->sharpness,
+                  "p of the normal blend w_i = (n.i)^(2p) (three-axis stacking, tile-blend)")
+      ->capture_default_str();
+  sub->add_option("--cell", args->cell,
+                  "tile-deform: grid cell size in exemplar pixels, S or SX,SY,SZ (0 = a quarter of the exemplar)")
+      ->capture_default_str();
+  sub->add_option("--lambda", args->lambda,
+                  "tile-deform: noise factors L or LX,LY,LZ (0 on an axis: no deformation along it)")
+      ->capture_default_str();
+  sub->add_option("--clamp", args->clamp, "tile-deform: largest displacement as a fraction of the cell (< 0.5)")
+      ->capture_default_str();
+  sub->add_option("--noise-scale", args->noiseScale, "tile-deform: grid cells per noise lattice spacing")
+      ->capture_default_str();
+  sub->add_option("--tile-size", args->tileSize, "tile-blend: triangle edge in exemplar pixels (0 = half the exemplar)")
+      ->capture_default_str();
+  sub->add_option("--blend-exponent", args->blendExponent, "tile-blend: sharpness of the blend between tiles (>= 1)")
+      ->capture_default_str();
+  return {sub, [args, &globals] { runSolid(*args, globals); }};
+}
+
+}  // namespace texsynth::cli

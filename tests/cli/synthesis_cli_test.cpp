@@ -1,0 +1,124 @@
+// End-to-end tests of `texsynth image` and `texsynth solid`: windows, outputs, bad parameters.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.h"
+#include "texsynth/core/data_paths.h"
+#include "texsynth/io/image_io.h"
+#include "texsynth/io/mesh_io.h"
+#include "texsynth/io/volume_io.h"
+#include "texsynth/render/primitives.h"
+
+using namespace texsynth;
+using test::RunResult;
+using test::runTexsynth;
+
+namespace {
+
+// A small exemplar on disk (8-bit, as users give them).
+std::string writeExemplar(const test::TempDir& dir) {
+  std::string path = dir.file("exemplar.png");
+  writeImage(path, test::makeTestPattern(48, 40));
+  return path;
+}
+
+}  // namespace
+
+TEST(ImageCli, WindowEqualsTheSameRegionOfALargerOutput) {
+  test::TempDir dir;
+  std::string exemplar = writeExemplar(dir);
+  for (const char* method : {"tile-deform", "tile-blend"}) {
+    SCOPED_TRACE(method);
+    std::string common = " --method " + std::string(method) + " --seed 7 --quiet --tileable never";
+    ASSERT_EQ(
+        runTexsynth("image " + exemplar + " -o " + dir.file("big.png") + " --size 160x120" + common, dir).exitCode, 0);
+    RunResult r =
+        runTexsynth("image " + exemplar + " -o " + dir.file("win.png") + " --window 37,51,64,40" + common, dir);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    Image big = readImage(dir.file("big.png")), window = readImage(dir.file("win.png"));
+    EXPECT_EQ(window.pixels, big.crop(37, 51, 64, 40).pixels);
+  }
+}
+
+TEST(ImageCli, SeedsDifferAndThreadCountsAgree) {
+  test::TempDir dir;
+  std::string exemplar = writeExemplar(dir);
+  auto run = [&](const std::string& extra, const std::string& name) {
+    RunResult r = runTexsynth("image " + exemplar + " -o " + dir.file(name) + " --size 96 --quiet " + extra, dir);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    return readFileBytes(dir.file(name));
+  };
+  EXPECT_EQ(run("--seed 3 --threads 1", "a.png"), run("--seed 3 --threads 2", "b.png"));
+  EXPECT_NE(run("--seed 3", "c.png"), run("--seed 4", "d.png"));
+}
+
+TEST(ImageCli, NonTileableExemplarIsConvertedAndSaved) {
+  test::TempDir dir;
+  // A horizontal ramp: its wrap-around edge is a hard seam.
+  Image ramp(64, 64, 3);
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 64; ++x)
+      for (int c = 0; c < 3; ++c) ramp.at(x, y, c) = x / 63.0f;
+  writeImage(dir.file("ramp.png"), ramp);
+  RunResult r = runTexsynth("image " + dir.file("ramp.png") + " -o " + dir.file("out.png") + " --size 64 --json" +
+                                " --save-tileable " + dir.file("tileable.png"),
+                            dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  auto report = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(report["made_tileable"].get<bool>());
+  EXPECT_LT(report["seam_ratio_after"].get<double>(), report["seam_ratio_before"].get<double>() / 2);
+  EXPECT_TRUE(std::filesystem::exists(dir.file("tileable.png")));
+}
+
+TEST(ImageCli, BadParametersAreUsageErrors) {
+  test::TempDir dir;
+  std::string exemplar = writeExemplar(dir);
+  for (const char* bad : {"--lambda -1", "--cell 0,-3", "--lambda abc", "--window 1,2,3", "--window 0,0,0,5",
+                          "--method quilting", "--clamp nan"}) {
+    SCOPED_TRACE(bad);
+    RunResult r = runTexsynth("image " + exemplar + " -o " + dir.file("x.png") + " " + bad, dir);
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_EQ(test::lineCount(r.err), 1) << r.err;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir.file("x.png")));
+}
+
+TEST(SolidCli, WritesMeshSlicesVolumeAndRender) {
+  test::TempDir dir;
+  std::string exemplar = writeExemplar(dir);
+  writeMesh(dir.file("ball.ply"), makeUvSphereMesh(Vec3f::Zero(), 1.0f, 12, 24));
+  for (const char* method : {"tile-deform", "tile-blend"}) {
+    SCOPED_TRACE(method);
+    RunResult r = runTexsynth("solid " + exemplar + " --method " + method + " --mesh " + dir.file("ball.ply") + " -o " +
+                                  dir.file("ball_colored.ply") + " --slice z=0.5 -o " + dir.file("slice.png") + " -o " +
+                                  dir.file("vol.nrrd") + " --resolution 24 --render " + dir.file("view.png") +
+                                  " --render-size 64 --quiet --stats " + dir.file("stats.json"),
+                              dir);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    Mesh colored = readMesh(dir.file("ball_colored.ply"));
+    EXPECT_EQ(colored.colors.size(), colored.vertexCount());
+    Volume volume = readVolume(dir.file("vol.nrrd"));
+    EXPECT_EQ(std::max({volume.nx, volume.ny, volume.nz}), 24);
+    EXPECT_EQ(readImage(dir.file("slice.png")).width, 24);
+    EXPECT_EQ(readImage(dir.file("view.png")).height, 64);
+    EXPECT_TRUE(std::filesystem::exists(dir.file("stats.json")));
+  }
+}
+
+TEST(SolidCli, OutputsAreCheckedBeforeAnyWork) {
+  test::TempDir dir;
+  std::string exemplar = writeExemplar(dir);
+  // A mesh output without --mesh, an image output without --slice, nothing to write, a bad slice.
+  for (const std::string& bad :
+       {"-o " + dir.file("m.ply"), "-o " + dir.file("s.png"), std::string(""), "--slice w=0.5 -o " + dir.file("s.png"),
+        "--slice z=2 -o " + dir.file("s.png"), "-o " + dir.file("v.txt"), "--stack q -o " + dir.file("v.nrrd")}) {
+    SCOPED_TRACE(bad);
+    RunResult r = runTexsynth("solid " + exemplar + " " + bad, dir);
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+  }
+  RunResult r = runTexsynth("solid " + dir.file("missing.png") + " -o " + dir.file("v.nrrd"), dir);
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("missing.png"), std::string::npos);
+}
