@@ -103,7 +103,8 @@ TEST(Cli, DemoRunsOnDefaultsAndWritesReport) {
   test::TempDir dir;
   RunResult r = runTexsynth("demo -o " + dir.file("demo") + " --quiet", dir);
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  for (const char* name : {"report.md", "report.json", "exemplar.png", "gaussian_stack.png", "mesh.png"})
+  for (const char* name :
+       {"report.md", "report.json", "exemplar.png", "gaussian_stack.png", "mesh.png", "mesh_solid.png"})
     EXPECT_TRUE(fs::exists(dir.file(std::string("demo/") + name))) << name;
   std::string report = readFileBytes(dir.file("demo/report.json"));
   EXPECT_NE(report.find("periodicity"), std::string::npos);
@@ -129,7 +130,7 @@ TEST(Cli, SameSeedSameBitsForAnyThreadCount) {
                               "TEXSYNTH_CACHE=" + dir.file("other-cache"));
   ASSERT_EQ(one.exitCode, 0) << one.err;
   ASSERT_EQ(two.exitCode, 0) << two.err;
-  for (const char* name : {"gaussian_stack.png", "mesh.png", "mesh_projected.png"})
+  for (const char* name : {"gaussian_stack.png", "mesh.png", "mesh_solid.png"})
     EXPECT_EQ(readFileBytes(dir.file(std::string("t1/") + name)), readFileBytes(dir.file(std::string("t2/") + name)))
         << name;
 }
