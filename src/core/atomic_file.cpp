@@ -20,7 +20,11 @@ void writeAtomically(const std::string& path, const std::function<void(const std
   if (!fs::is_directory(dir, ec)) throw OutputError(path, "directory '" + dir.string() + "' does not exist");
   if (fs::is_directory(target, ec)) throw OutputError(path, "is a directory");
   // Keep the real extension last: some writers pick the format from it.
-  std::string temp = (dir / ("." + target.stem().string() + ".tmp" + std::to_string(::getpid()) + target.extension().string())).string();
+  // Built piecewise: GCC 12 warns falsely (-Wrestrict) on a chain of operator+ starting at a literal.
+  std::string name = ".";
+  name.append(target.stem().string()).append(".tmp").append(std::to_string(::getpid()));
+  name.append(target.extension().string());
+  std::string temp = (dir / name).string();
   try {
     write(temp);
   } catch (...) {
