@@ -87,6 +87,13 @@ Window parseWindow(const std::string& text, const std::string& flag) {
   return w;
 }
 
+void addTileBlendOptions(CLI::App& sub, float& tileSize, float& blendExponent) {
+  sub.add_option("--tile-size", tileSize, "tile-blend: triangle edge in exemplar pixels (0 = half the exemplar)")
+      ->capture_default_str();
+  sub.add_option("--blend-exponent", blendExponent, "tile-blend: sharpness of the blend between tiles (>= 1)")
+      ->capture_default_str();
+}
+
 void printJson(const nlohmann::json& document) {
   std::cout << document.dump(2) << std::endl;
 }

@@ -46,6 +46,9 @@ struct Window {
 };
 Window parseWindow(const std::string& text, const std::string& flag);
 
+// The tile-blend flags shared by `image` and `solid`: --tile-size and --blend-exponent.
+void addTileBlendOptions(CLI::App& sub, float& tileSize, float& blendExponent);
+
 // Prints a JSON document on stdout (for --json).
 void printJson(const nlohmann::json& document);
 

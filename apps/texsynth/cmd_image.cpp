@@ -140,10 +140,7 @@ Command registerImageCommand(CLI::App& app, const GlobalOptions& globals) {
   sub->add_option("--directions", args->directions, std::string(deform) + ": deform both axes, or only x or only y")
       ->capture_default_str()
       ->check(CLI::IsMember({"both", "x", "y"}));
-  sub->add_option("--tile-size", args->tileSize, "tile-blend: triangle edge in pixels (0 = half the exemplar)")
-      ->capture_default_str();
-  sub->add_option("--blend-exponent", args->blendExponent, "tile-blend: sharpness of the blend between tiles (>= 1)")
-      ->capture_default_str();
+  addTileBlendOptions(*sub, args->tileSize, args->blendExponent);
   return {sub, [args, &globals] { runImage(*args, globals); }};
 }
 

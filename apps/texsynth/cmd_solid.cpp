@@ -238,10 +238,7 @@ Command registerSolidCommand(CLI::App& app, const GlobalOptions& globals) {
       ->capture_default_str();
   sub->add_option("--noise-scale", args->noiseScale, "tile-deform: grid cells per noise lattice spacing")
       ->capture_default_str();
-  sub->add_option("--tile-size", args->tileSize, "tile-blend: triangle edge in exemplar pixels (0 = half the exemplar)")
-      ->capture_default_str();
-  sub->add_option("--blend-exponent", args->blendExponent, "tile-blend: sharpness of the blend between tiles (>= 1)")
-      ->capture_default_str();
+  addTileBlendOptions(*sub, args->tileSize, args->blendExponent);
   return {sub, [args, &globals] { runSolid(*args, globals); }};
 }
 

@@ -30,14 +30,5 @@ inline double periodicityOf(const Image& image, int samples = 500) {
   return periodicity(PatchIndex(scaled, 7), PeriodicityOptions{.samples = samples});
 }
 
-// Expects `run` to throw a ParameterError naming `parameter`.
-inline void expectParameterError(const std::function<void()>& run, const std::string& parameter) {
-  try {
-    run();
-    ADD_FAILURE() << "accepted bad " << parameter;
-  } catch (const ParameterError& e) {
-    EXPECT_EQ(e.parameter(), parameter);
-  }
-}
 
 }  // namespace texsynth::test

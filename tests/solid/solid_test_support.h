@@ -40,15 +40,5 @@ inline Volume makeTestVolume(int n) {
   return v;
 }
 
-// Expects fn() to throw a ParameterError naming `parameter`.
-template <class Fn>
-void expectParameterError(Fn&& fn, const std::string& parameter) {
-  try {
-    fn();
-    ADD_FAILURE() << "no error for " << parameter;
-  } catch (const ParameterError& e) {
-    EXPECT_EQ(e.parameter(), parameter);
-  }
-}
 
 }  // namespace texsynth::test

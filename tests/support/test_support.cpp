@@ -41,6 +41,15 @@ void expectInputError(const std::function<void()>& read, const std::string& path
   }
 }
 
+void expectParameterError(const std::function<void()>& run, const std::string& parameter) {
+  try {
+    run();
+    ADD_FAILURE() << "accepted bad " << parameter;
+  } catch (const ParameterError& e) {
+    EXPECT_EQ(e.parameter(), parameter);
+  }
+}
+
 Image makeTestPattern(int width, int height, unsigned seed) {
   Image image(width, height, 3);
   for (int y = 0; y < height; ++y)

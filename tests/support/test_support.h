@@ -29,11 +29,14 @@ void writeBytes(const std::string& path, const std::string& bytes);
 // any other outcome (no error, another exception type) is a test failure.
 void expectInputError(const std::function<void()>& read, const std::string& path, const std::string& problem = "");
 
+// Expects `run` to throw a ParameterError naming `parameter`.
+void expectParameterError(const std::function<void()>& run, const std::string& parameter);
+
 // A small deterministic RGB test pattern with structure at several scales.
 Image makeTestPattern(int width, int height, unsigned seed = 1);
 
 }  // namespace texsynth::test
 
 // Skips the current test when optional real data (a Debian package) is absent.
-#define TS_REQUIRE_DATA(optionalPath)                                              \
+#define TS_REQUIRE_DATA(optionalPath) \
   if (!(optionalPath)) GTEST_SKIP() << "real test data not installed: run scripts/install-deps.sh"
