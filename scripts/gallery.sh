@@ -31,4 +31,10 @@ for name in Stone/pink_marble Wood/bark; do
   "$t" image $p/$name.pat --method tile-deform --size 256 -o "$out/${stem}_tile_deform.png" --quiet --tileable never
   "$t" image $p/$name.pat --method tile-blend --size 256 -o "$out/${stem}_tile_blend.png" --quiet --tileable never
 done
+# Automatic tileable conversion: a crop of a GIMP pattern (a window of its plain tiling) is not
+# tileable; tiled 2x2 before and after conversion.
+"$t" image $p/Stone/stone33.pat --method tile-deform --lambda 0 --window 20,30,100,100 -o "$out/crop.png" --quiet --tileable never
+"$t" image "$out/crop.png" --method tile-deform --lambda 0 --size 200 -o "$out/crop_tiled_before.png" --quiet --tileable never
+"$t" image "$out/crop.png" --method tile-deform --lambda 0 --size 200 -o "$out/crop_tiled_after.png" --quiet --tileable always
+rm "$out/crop.png"
 ls -la "$out"

@@ -207,6 +207,9 @@ Command registerSolidCommand(CLI::App& app, const GlobalOptions& globals) {
       ->check(CLI::IsMember({"tile-deform", "tile-blend"}));
   sub->add_option("--mesh", args->mesh, "Mesh to texture (.obj .ply .off .stl)");
   sub->add_option("-o,--output", args->outputs, "Output file(s): colored mesh, slice image(s) or volume");
+  sub->add_option_function<std::string>(
+      "--volume", [args](const std::string& file) { args->outputs.push_back(file); },
+      "Write the volume (.nrrd or .vdb) at --resolution; the same as -o FILE");
   sub->add_option("--slice", args->slices, "AXIS=POSITION in [0,1] across the box, e.g. z=0.5 (one image -o each)");
   sub->add_option("--resolution", args->resolution, "Voxels along the box's longest side, for slices and volumes")
       ->capture_default_str()
