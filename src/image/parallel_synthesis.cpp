@@ -1,0 +1,107 @@
+// Parallel synthesis driver: plans, from the requested window down to the coarsest level,
+// the padded region each level must synthesize, then runs upsampling, jitter and correction
+// from the coarsest level up, and finally looks colors up at the finest coordinates.
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "texsynth/core/parallel.h"
+#include "texsynth/image/parallel_synthesis.h"
+#include "texsynth/image/window_support.h"
+
+namespace texsynth {
+namespace {
+
+constexpr std::int64_t kMaxAbsoluteCoordinate = std::int64_t(1) << 28;
+
+int floorDiv2(int v) { return v >= 0 ? v / 2 : -((1 - v) / 2); }
+
+struct Region {
+  int x0, y0, width, height;
+  Region grown(int margin) const { return {x0 - margin, y0 - margin, width + 2 * margin, height + 2 * margin}; }
+  // The coarser-level pixels that the upsampling of this region reads.
+  Region parents() const {
+    const int px0 = floorDiv2(x0), py0 = floorDiv2(y0);
+    return {px0, py0, floorDiv2(x0 + width - 1) - px0 + 1, floorDiv2(y0 + height - 1) - py0 + 1};
+  }
+  SourceCoordinates coordinates() const { return {x0, y0, width, height}; }
+};
+
+void validate(const ExemplarAnalysis& analysis, const ParallelSynthesisOptions& options, int x0, int y0, int w,
+              int h) {
+  if (analysis.levels.empty() || analysis.width <= 0 || analysis.height <= 0)
+    throw ParameterError("analysis", "is empty (run analyzeExemplar first)");
+  requireWindow(w, h);
+  if (std::abs(std::int64_t(x0)) >= kMaxAbsoluteCoordinate ||
+      std::abs(std::int64_t(x0) + w) >= kMaxAbsoluteCoordinate)
+    throw ParameterError("x0", "window must stay within +-2^28 pixels, got x0 = " + std::to_string(x0));
+  if (std::abs(std::int64_t(y0)) >= kMaxAbsoluteCoordinate ||
+      std::abs(std::int64_t(y0) + h) >= kMaxAbsoluteCoordinate)
+    throw ParameterError("y0", "window must stay within +-2^28 pixels, got y0 = " + std::to_string(y0));
+  if (options.passes < 0) throw ParameterError("passes", "must be >= 0, got " + std::to_string(options.passes));
+  if (!options.jitter.empty() && int(options.jitter.size()) != analysis.levelCount())
+    throw ParameterError("jitter", "needs one value per level (" + std::to_string(analysis.levelCount()) + "), got " +
+                                       std::to_string(options.jitter.size()));
+  requireFiniteAtLeast("jitter", options.defaultJitter, 0.0f);
+  for (float r : options.jitter) requireFiniteAtLeast("jitter", r, 0.0f);
+}
+
+}  // namespace
+
+SourceCoordinates synthesizeParallelCoordinates(const ExemplarAnalysis& analysis,
+                                                const ParallelSynthesisOptions& options, int x0, int y0, int w,
+                                                int h, Progress& progress) {
+  validate(analysis, options, x0, y0, w, h);
+  const int levels = analysis.levelCount();
+  const int margin = correctionMargin(analysis, options.passes);
+
+  // corrected[l]: the region level l must deliver; the finest delivers the window itself.
+  std::vector<Region> corrected(static_cast<std::size_t>(levels));
+  corrected[levels - 1] = {x0, y0, w, h};
+  for (int l = levels - 1; l > 0; --l) corrected[l - 1] = corrected[l].grown(margin).parents();
+
+  progress.begin("parallel synthesis", levels);
+  SourceCoordinates coords;
+  for (int l = 0; l < levels; ++l) {
+    const int spacing = analysis.levels[l].spacing;
+    const Region start = corrected[l].grown(margin);
+    coords = l == 0 ? tilingCoordinates(start.x0, start.y0, start.width, start.height, spacing, analysis.width,
+                                                analysis.height)
+                    : upsampleCoordinates(coords, start.coordinates(), spacing, analysis.width, analysis.height);
+    const float strength = options.jitter.empty() ? options.defaultJitter : options.jitter[l];
+    jitterCoordinates(coords, l, spacing, strength, options.seed, analysis.width, analysis.height);
+    for (int pass = 0; pass < options.passes; ++pass) coords = correctCoordinates(analysis, l, coords);
+    TS_CHECK(coords.x0 == corrected[l].x0 && coords.width == corrected[l].width);
+    TS_CHECK(coords.y0 == corrected[l].y0 && coords.height == corrected[l].height);
+    progress.advance(1);
+  }
+  progress.end();
+  return coords;
+}
+
+Image lookupColors(const Image& image, const SourceCoordinates& coords, int channels) {
+  if (image.empty()) throw ParameterError("image", "is empty");
+  if (channels < 0 || channels > image.channels)
+    throw ParameterError("channels", "must be in [0, " + std::to_string(image.channels) + "], got " +
+                                         std::to_string(channels));
+  if (channels == 0) channels = image.channels;
+  Image out(coords.width, coords.height, channels);
+  parallelForChunks(0, coords.height, kRowChunk, [&](std::int64_t begin, std::int64_t end) {
+    for (int j = int(begin); j < int(end); ++j)
+      for (int i = 0; i < coords.width; ++i) {
+        const std::int32_t* source = coords.at(coords.x0 + i, coords.y0 + j);
+        // Coordinates from another exemplar of a different size still wrap onto this map.
+        const float* color = image.pixel(int(source[0] % image.width), int(source[1] % image.height));
+        std::copy(color, color + channels, out.pixel(i, j));
+      }
+  });
+  return out;
+}
+
+Image synthesizeParallel(const ExemplarAnalysis& analysis, const ParallelSynthesisOptions& options, int x0, int y0,
+                         int w, int h, Progress& progress) {
+  SourceCoordinates coords = synthesizeParallelCoordinates(analysis, options, x0, y0, w, h, progress);
+  return lookupColors(analysis.levels.back().image, coords, analysis.colorChannels);
+}
+
+}  // namespace texsynth

@@ -1,0 +1,145 @@
+// k-coherence correction of parallel synthesis (Lefebvre & Hoppe 2005, section 3.4): each
+// pixel of a subpass compares its neighborhood of colors (gathered at the current source
+// coordinates, spacing 1 on the synthesized grid) with the exemplar neighborhoods of its
+// coherent candidates, in the level's PCA space. Pixels of one subpass read only the state
+// before the subpass (double buffering), so the result never depends on scheduling.
+#include <algorithm>
+#include <limits>
+
+#include "texsynth/core/parallel.h"
+#include "texsynth/image/parallel_synthesis.h"
+#include "texsynth/image/window_support.h"
+
+namespace texsynth {
+namespace {
+
+int wrap(int v, int m) {
+  int r = v % m;
+  return r < 0 ? r + m : r;
+}
+int parity(int v) { return v & 1; }  // two's complement: also right for negative v
+
+// Radius of everything a corrected pixel reads: its neighborhood and the 3x3 candidate sources.
+int readRadius(const ExemplarAnalysis& analysis) { return std::max(analysis.neighborhoodSize / 2, 1); }
+
+// Gathers and projects the neighborhoods of synthesized pixels at one level.
+class NeighborhoodProjector {
+ public:
+  NeighborhoodProjector(const ExemplarAnalysis& analysis, int level)
+      : level_(analysis.levels[level]),
+        radius_(analysis.neighborhoodSize / 2),
+        channels_(level_.image.channels),
+        buffer_(std::size_t(level_.pca.inputDimension)) {
+    TS_CHECK(level_.pca.inputDimension == analysis.neighborhoodSize * analysis.neighborhoodSize * channels_);
+  }
+
+  // out[D] = projected neighborhood of colors at the coordinates around absolute (x, y).
+  void project(const SourceCoordinates& coords, int x, int y, float* out) {
+    float* write = buffer_.data();
+    for (int dy = -radius_; dy <= radius_; ++dy)
+      for (int dx = -radius_; dx <= radius_; ++dx) {
+        const std::int32_t* source = coords.at(x + dx, y + dy);
+        const float* color = level_.image.pixel(source[0], source[1]);
+        write = std::copy(color, color + channels_, write);
+      }
+    level_.pca.project(buffer_.data(), out);
+  }
+
+  float distanceTo(const float* query, std::int32_t exemplarPixel) const {
+    const float* target = level_.projectedAt(exemplarPixel);
+    float sum = 0;
+    for (int i = 0; i < level_.pca.outputDimension; ++i) {
+      const float d = query[i] - target[i];
+      sum += d * d;
+    }
+    return sum;
+  }
+
+ private:
+  const ExemplarLevel& level_;
+  int radius_, channels_;
+  std::vector<float> buffer_;
+};
+
+// The 3x3 offsets with (0,0) first: the pixel's own coherent candidates win ties.
+constexpr int kOffsets[9][2] = {{0, 0}, {-1, -1}, {0, -1}, {1, -1}, {-1, 0}, {1, 0}, {-1, 1}, {0, 1}, {1, 1}};
+
+// One subpass: pixels of `after`'s region with parity (px, py) are corrected from `before`,
+// the others copied.
+void correctSubpass(const ExemplarAnalysis& analysis, int level, const SourceCoordinates& before,
+                    SourceCoordinates& after, int px, int py) {
+  const int spacing = analysis.levels[level].spacing;
+  const int dimension = analysis.levels[level].pca.outputDimension;
+  const int k = analysis.similarCount;
+  parallelForChunks(0, after.height, kRowChunk, [&](std::int64_t begin, std::int64_t end) {
+    NeighborhoodProjector projector(analysis, level);
+    std::vector<float> query(static_cast<std::size_t>(dimension));
+    for (int j = int(begin); j < int(end); ++j) {
+      const int y = after.y0 + j;
+      for (int x = after.x0; x < after.x0 + after.width; ++x) {
+        std::int32_t* target = after.at(x, y);
+        const std::int32_t* current = before.at(x, y);
+        if (parity(x) != px || parity(y) != py) {
+          target[0] = current[0], target[1] = current[1];
+          continue;
+        }
+        projector.project(before, x, y, query.data());
+        float best = std::numeric_limits<float>::infinity();
+        std::int32_t bestPixel = analysis.pixelIndex(current[0], current[1]);
+        for (const auto& d : kOffsets) {
+          const std::int32_t* neighbor = before.at(x + d[0], y + d[1]);
+          const int cx = wrap(neighbor[0] - spacing * d[0], analysis.width);
+          const int cy = wrap(neighbor[1] - spacing * d[1], analysis.height);
+          const std::int32_t* similar = analysis.similarAt(level, analysis.pixelIndex(cx, cy));
+          for (int i = 0; i < k; ++i) {
+            const float distance = projector.distanceTo(query.data(), similar[i]);
+            if (distance < best) best = distance, bestPixel = similar[i];
+          }
+        }
+        target[0] = bestPixel % analysis.width;
+        target[1] = bestPixel / analysis.width;
+      }
+    }
+  });
+}
+
+}  // namespace
+
+int correctionMargin(const ExemplarAnalysis& analysis, int passes) { return passes * 4 * readRadius(analysis); }
+
+SourceCoordinates correctCoordinates(const ExemplarAnalysis& analysis, int level, const SourceCoordinates& coords) {
+  static constexpr int kSubpassOrder[4][2] = {{0, 0}, {1, 1}, {1, 0}, {0, 1}};
+  const int r = readRadius(analysis);
+  TS_CHECK(coords.width > 8 * r && coords.height > 8 * r);
+  SourceCoordinates current = coords;
+  for (const auto& subpass : kSubpassOrder) {
+    SourceCoordinates next(current.x0 + r, current.y0 + r, current.width - 2 * r, current.height - 2 * r);
+    correctSubpass(analysis, level, current, next, subpass[0], subpass[1]);
+    current = std::move(next);
+  }
+  return current;
+}
+
+double meanNeighborhoodDistance(const ExemplarAnalysis& analysis, int level, const SourceCoordinates& coords) {
+  const int r = analysis.neighborhoodSize / 2;
+  if (coords.width <= 2 * r || coords.height <= 2 * r) return 0.0;
+  const int rows = coords.height - 2 * r;
+  std::vector<double> rowSums(static_cast<std::size_t>(rows), 0.0);
+  parallelForChunks(0, rows, kRowChunk, [&](std::int64_t begin, std::int64_t end) {
+    NeighborhoodProjector projector(analysis, level);
+    std::vector<float> query(static_cast<std::size_t>(analysis.levels[level].pca.outputDimension));
+    for (int j = int(begin); j < int(end); ++j) {
+      const int y = coords.y0 + r + j;
+      for (int x = coords.x0 + r; x < coords.x0 + coords.width - r; ++x) {
+        projector.project(coords, x, y, query.data());
+        const std::int32_t* source = coords.at(x, y);
+        rowSums[j] += projector.distanceTo(query.data(), analysis.pixelIndex(source[0], source[1]));
+      }
+    }
+  });
+  double total = 0;  // summed in row order: independent of the thread count
+  for (double s : rowSums) total += s;
+  return total / (double(rows) * (coords.width - 2 * r));
+}
+
+}  // namespace texsynth
