@@ -4,7 +4,9 @@
 #include <cstdio>
 
 #include "cli_common.h"
+#include "texsynth/exemplar/analysis_cache.h"
 #include "texsynth/image/make_tileable.h"
+#include "texsynth/image/parallel_synthesis.h"
 #include "texsynth/image/tile_blend.h"
 #include "texsynth/image/tile_deform.h"
 #include "texsynth/io/file_kind.h"
@@ -18,14 +20,47 @@ namespace {
 
 struct ImageArgs {
   std::string exemplar, output, method = "tile-deform", size = "512", window;
-  std::string tileable = "auto", saveTileable;
+  std::string tileable = "auto", saveTileable, coords;
   float seamThreshold = 1.5f;
   // tile-deform
   std::string cell = "0", lambda = "0.35", directions = "both";
   float clamp = 0.45f, noiseFrequency = 0.6f;
   // tile-blend
   float tileSize = 0, blendExponent = 2.0f;
+  // parallel
+  int passes = 2;
+  std::string jitter;
 };
+
+// Source coordinates as a two-channel float image (x, y into the exemplar), for --coords.
+Image coordinateImage(const SourceCoordinates& coords) {
+  Image image(coords.width, coords.height, 2);
+  for (std::size_t i = 0; i < coords.xy.size(); ++i) image.pixels[i] = float(coords.xy[i]);
+  return image;
+}
+
+// Lefebvre & Hoppe 2005 on the (cached) exemplar analysis.
+Image synthesizeParallelWindow(const Image& exemplar, const ImageArgs& args, const Window& window,
+                               const GlobalOptions& globals, json& report) {
+  const std::int64_t limit = std::int64_t(1) << 28;
+  if (window.x < -limit || window.x > limit || window.y < -limit || window.y > limit)
+    throw ParameterError("--window", "parallel synthesis needs X and Y within +-2^28");
+  auto progress = makeProgress(globals);
+  ExemplarAnalysis analysis = analyzeExemplarCached(exemplar, AnalysisOptions{}, defaultCacheDirectory(), *progress);
+  ParallelSynthesisOptions options;
+  options.seed = globals.seed;
+  options.passes = args.passes;
+  if (!args.jitter.empty()) {
+    auto [coarse, rest] = parseFloatPair(args.jitter, "--jitter");
+    options.jitter.assign(analysis.levelCount(), rest);
+    options.jitter[0] = coarse;
+  }
+  SourceCoordinates coords = synthesizeParallelCoordinates(analysis, options, int(window.x), int(window.y),
+                                                           window.width, window.height, *progress);
+  if (!args.coords.empty()) writeImage(args.coords, coordinateImage(coords));
+  report["levels"] = analysis.levelCount();
+  return lookupColors(exemplar, coords);
+}
 
 DeformDirections parseDirections(const std::string& text) {
   if (text == "both") return DeformDirections::Both;
@@ -75,6 +110,8 @@ void runImage(const ImageArgs& args, const GlobalOptions& globals) {
     TileDeformTexture texture(exemplar, options);
     report["cell"] = {texture.cellWidth(), texture.cellHeight()};
     result = texture.synthesizeWindow(window.x, window.y, window.width, window.height);
+  } else if (args.method == "parallel") {
+    result = synthesizeParallelWindow(exemplar, args, window, globals, report);
   } else {
     TileBlendOptions options;
     options.tileSize = args.tileSize;
@@ -107,13 +144,15 @@ Command registerImageCommand(CLI::App& app, const GlobalOptions& globals) {
       "  tile-deform: tile the exemplar and deform a grid over it with Perlin noise (Chen et al.); keeps features "
       "crisp, suits irregular and near-stochastic textures (marble, stone, bark).\n"
       "  tile-blend: histogram-preserving tiling and blending (Heitz & Neyret 2018); no visible deformation, keeps "
-      "the exemplar's histogram, suits stochastic textures (granite, sand, noise-like surfaces).");
+      "the exemplar's histogram, suits stochastic textures (granite, sand, noise-like surfaces).\n"
+      "  parallel: Lefebvre & Hoppe 2005 k-coherence synthesis on the cached exemplar analysis; copies exemplar "
+      "content pixel by pixel, so features stay crisp without visible tiling.");
   auto args = std::make_shared<ImageArgs>();
   sub->add_option("EXEMPLAR", args->exemplar, "Exemplar image")->required();
   sub->add_option("-o,--output", args->output, "Output image (.png .jpg .exr ...)")->required();
   sub->add_option("--method", args->method, "Synthesis method")
       ->capture_default_str()
-      ->check(CLI::IsMember({"tile-deform", "tile-blend"}));
+      ->check(CLI::IsMember({"tile-deform", "tile-blend", "parallel"}));
   sub->add_option("--size", args->size, "Output size WxH or N (the window at the origin)")->capture_default_str();
   sub->add_option("--window", args->window,
                   "X,Y,W,H: the window of the infinite texture to compute (overrides --size)");
@@ -141,6 +180,14 @@ Command registerImageCommand(CLI::App& app, const GlobalOptions& globals) {
       ->capture_default_str()
       ->check(CLI::IsMember({"both", "x", "y"}));
   addTileBlendOptions(*sub, args->tileSize, args->blendExponent);
+  sub->add_option("--passes", args->passes, "parallel: correction passes per level")->capture_default_str();
+  sub->add_option("--jitter", args->jitter,
+                  "parallel: jitter strength for all levels, or COARSEST,OTHERS (default 0.4 everywhere; raise the "
+                  "coarsest to break "
+                  "large-scale repetition)");
+  sub->add_option("--coords", args->coords,
+                  "parallel: also write the synthesized source coordinates (x, y into the exemplar as used, i.e. after "
+                  "--tileable conversion: see --save-tileable) to this .exr");
   return {sub, [args, &globals] { runImage(*args, globals); }};
 }
 

@@ -29,7 +29,7 @@ std::string writeExemplar(const test::TempDir& dir) {
 TEST(ImageCli, WindowEqualsTheSameRegionOfALargerOutput) {
   test::TempDir dir;
   std::string exemplar = writeExemplar(dir);
-  for (const char* method : {"tile-deform", "tile-blend"}) {
+  for (const char* method : {"tile-deform", "tile-blend", "parallel"}) {
     SCOPED_TRACE(method);
     std::string common = " --method " + std::string(method) + " --seed 7 --quiet --tileable never";
     ASSERT_EQ(
@@ -40,6 +40,21 @@ TEST(ImageCli, WindowEqualsTheSameRegionOfALargerOutput) {
     Image big = readImage(dir.file("big.png")), window = readImage(dir.file("win.png"));
     EXPECT_EQ(window.pixels, big.crop(37, 51, 64, 40).pixels);
   }
+}
+
+TEST(ImageCli, ParallelWritesSourceCoordinatesThatReproduceTheOutput) {
+  test::TempDir dir;
+  std::string exemplar = writeExemplar(dir);
+  RunResult r = runTexsynth("image " + exemplar + " --method parallel --size 40x24 --quiet --tileable never -o " +
+                                dir.file("out.png") + " --coords " + dir.file("coords.exr"),
+                            dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  Image source = readImage(exemplar), out = readImage(dir.file("out.png")), coords = readImage(dir.file("coords.exr"));
+  ASSERT_EQ(coords.channels, 2);
+  for (int y = 0; y < out.height; ++y)
+    for (int x = 0; x < out.width; ++x)
+      for (int c = 0; c < 3; ++c)
+        ASSERT_EQ(out.at(x, y, c), source.at(int(coords.at(x, y, 0)), int(coords.at(x, y, 1)), c)) << x << "," << y;
 }
 
 TEST(ImageCli, SeedsDifferAndThreadCountsAgree) {
