@@ -25,8 +25,12 @@ std::optional<std::string> gimpPattern(const std::string& relative) {
   return existing(fs::path("/usr/share/gimp/2.0/patterns") / relative);
 }
 
-std::optional<std::string> cgalMesh(const std::string& name) { return existing(fs::path(dataDirectory()) / "meshes" / name); }
+std::optional<std::string> cgalMesh(const std::string& name) {
+  return existing(fs::path(dataDirectory()) / "meshes" / name);
+}
 
-std::optional<std::string> assimpInvalidModels() { return existing("/usr/share/assimp/models/invalid"); }
+std::optional<std::string> assimpInvalidModels() {
+  return existing("/usr/share/assimp/models/invalid");
+}
 
 }  // namespace texsynth

@@ -12,7 +12,8 @@ void validateFbm(const FbmOptions& options) {
   if (options.octaves < 1) throw ParameterError("octaves", "must be >= 1, got " + std::to_string(options.octaves));
   if (!(options.lacunarity > 0.0f) || !std::isfinite(options.lacunarity))
     throw ParameterError("lacunarity", "must be a finite number > 0");
-  if (!(options.gain > 0.0f) || !std::isfinite(options.gain)) throw ParameterError("gain", "must be a finite number > 0");
+  if (!(options.gain > 0.0f) || !std::isfinite(options.gain))
+    throw ParameterError("gain", "must be a finite number > 0");
 }
 
 // Sums octaves of `octave(frequency, octaveSeed)`, normalized by the total amplitude.

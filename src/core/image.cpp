@@ -4,6 +4,8 @@
 #include <cmath>
 #include <string>
 
+#include "texsynth/core/wrap.h"
+
 namespace texsynth {
 
 Image::Image(int w, int h, int c, float fill) : width(w), height(h), channels(c) {
@@ -11,32 +13,15 @@ Image::Image(int w, int h, int c, float fill) : width(w), height(h), channels(c)
   pixels.assign(std::size_t(w) * h * c, fill);
 }
 
-static inline int wrapIndex(int i, int n) {
-  int r = i % n;
-  return r < 0 ? r + n : r;
-}
-
-float Image::wrapped(int x, int y, int c) const { return at(wrapIndex(x, width), wrapIndex(y, height), c); }
-
-void Image::sampleBilinearWrapped(float x, float y, float* out) const {
-  float fx = x - 0.5f, fy = y - 0.5f;
-  float x0f = std::floor(fx), y0f = std::floor(fy);
-  float tx = fx - x0f, ty = fy - y0f;
-  int x0 = wrapIndex(int(x0f), width), y0 = wrapIndex(int(y0f), height);
-  int x1 = wrapIndex(x0 + 1, width), y1 = wrapIndex(y0 + 1, height);
-  const float *p00 = pixel(x0, y0), *p10 = pixel(x1, y0), *p01 = pixel(x0, y1), *p11 = pixel(x1, y1);
-  for (int c = 0; c < channels; ++c) {
-    float top = p00[c] + (p10[c] - p00[c]) * tx;
-    float bottom = p01[c] + (p11[c] - p01[c]) * tx;
-    out[c] = top + (bottom - top) * ty;
-  }
+float Image::wrapped(int x, int y, int c) const {
+  return at(wrapIndex(x, width), wrapIndex(y, height), c);
 }
 
 Image Image::crop(int x0, int y0, int w, int h) const {
   if (w <= 0 || h <= 0 || x0 < 0 || y0 < 0 || x0 + w > width || y0 + h > height)
-    throw ParameterError("crop", "window " + std::to_string(w) + "x" + std::to_string(h) + " at (" + std::to_string(x0) +
-                                     "," + std::to_string(y0) + ") does not fit a " + std::to_string(width) + "x" +
-                                     std::to_string(height) + " image");
+    throw ParameterError("crop", "window " + std::to_string(w) + "x" + std::to_string(h) + " at (" +
+                                     std::to_string(x0) + "," + std::to_string(y0) + ") does not fit a " +
+                                     std::to_string(width) + "x" + std::to_string(height) + " image");
   Image out(w, h, channels);
   for (int y = 0; y < h; ++y) std::copy_n(pixel(x0, y0 + y), std::size_t(w) * channels, out.pixel(0, y));
   return out;

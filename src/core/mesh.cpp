@@ -29,15 +29,18 @@ void Mesh::validate(const std::string& source) const {
   if (positions.empty()) throw InputError(source, "mesh has no vertices");
   if (triangles.empty()) throw InputError(source, "mesh has no faces");
   for (std::size_t i = 0; i < positions.size(); ++i)
-    if (!positions[i].allFinite()) throw InputError(source, "vertex " + std::to_string(i) + " has a non-finite coordinate");
+    if (!positions[i].allFinite())
+      throw InputError(source, "vertex " + std::to_string(i) + " has a non-finite coordinate");
   const int n = int(positions.size());
   for (std::size_t i = 0; i < triangles.size(); ++i)
     for (int k = 0; k < 3; ++k)
       if (triangles[i][k] < 0 || triangles[i][k] >= n)
         throw InputError(source, "face " + std::to_string(i) + " refers to vertex " + std::to_string(triangles[i][k]) +
                                      " but the mesh has " + std::to_string(n) + " vertices");
-  if (!normals.empty() && normals.size() != positions.size()) throw InputError(source, "normal count differs from vertex count");
-  if (!colors.empty() && colors.size() != positions.size()) throw InputError(source, "color count differs from vertex count");
+  if (!normals.empty() && normals.size() != positions.size())
+    throw InputError(source, "normal count differs from vertex count");
+  if (!colors.empty() && colors.size() != positions.size())
+    throw InputError(source, "color count differs from vertex count");
 }
 
 double Mesh::surfaceArea() const {

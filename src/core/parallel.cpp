@@ -9,7 +9,8 @@
 
 namespace texsynth {
 
-void parallelFor(std::int64_t begin, std::int64_t end, const std::function<void(std::int64_t)>& body, std::int64_t grain) {
+void parallelFor(std::int64_t begin, std::int64_t end, const std::function<void(std::int64_t)>& body,
+                 std::int64_t grain) {
   parallelForChunks(begin, end, grain, [&](std::int64_t b, std::int64_t e) {
     for (std::int64_t i = b; i < e; ++i) body(i);
   });
@@ -28,13 +29,17 @@ struct ThreadLimit::Impl {
 };
 
 ThreadLimit::ThreadLimit(int threads) : impl_(std::make_unique<Impl>()) {
-  if (threads < 0) throw ParameterError("--threads", "must be 0 (all) or a positive count, got " + std::to_string(threads));
+  if (threads < 0)
+    throw ParameterError("--threads", "must be 0 (all) or a positive count, got " + std::to_string(threads));
   if (threads > 0)
-    impl_->control = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+    impl_->control =
+        std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
 }
 
 ThreadLimit::~ThreadLimit() = default;
 
-int hardwareThreads() { return tbb::info::default_concurrency(); }
+int hardwareThreads() {
+  return tbb::info::default_concurrency();
+}
 
 }  // namespace texsynth

@@ -2,16 +2,13 @@
 
 #include <cmath>
 
+#include "texsynth/core/wrap.h"
+
 namespace texsynth {
 
 Volume::Volume(int x, int y, int z, int c, float fill) : nx(x), ny(y), nz(z), channels(c) {
   if (x < 0 || y < 0 || z < 0 || c < 0) throw ParameterError("volume size", "negative dimension");
   voxels.assign(std::size_t(x) * y * z * c, fill);
-}
-
-static inline int wrapIndex(int i, int n) {
-  int r = i % n;
-  return r < 0 ? r + n : r;
 }
 
 void Volume::sampleTrilinearWrapped(float x, float y, float z, float* out) const {

@@ -4,6 +4,7 @@
 
 #include "texsynth/core/error.h"
 #include "texsynth/core/parallel.h"
+#include "texsynth/core/wrap.h"
 
 namespace texsynth {
 namespace {
@@ -12,17 +13,12 @@ constexpr float kCenterWeight = 6.0f / 16.0f;
 constexpr float kNearWeight = 4.0f / 16.0f;
 constexpr float kFarWeight = 1.0f / 16.0f;
 
-int wrap(long long i, int n) {
-  long long r = i % n;
-  return int(r < 0 ? r + n : r);
-}
-
 // Filters `count` samples spaced `stride` floats apart (a row or a column of one channel).
 // `line` is a private copy of the input samples, so in-place output is safe.
 void filterLine(const float* line, int count, int spacing, float* out, std::size_t outStride) {
   for (int i = 0; i < count; ++i) {
-    float nearSum = line[wrap(i - spacing, count)] + line[wrap(i + spacing, count)];
-    float farSum = line[wrap(i - 2LL * spacing, count)] + line[wrap(i + 2LL * spacing, count)];
+    float nearSum = line[wrapIndex(i - spacing, count)] + line[wrapIndex(i + spacing, count)];
+    float farSum = line[wrapIndex(i - 2LL * spacing, count)] + line[wrapIndex(i + 2LL * spacing, count)];
     out[i * outStride] = kFarWeight * farSum + kNearWeight * nearSum + kCenterWeight * line[i];
   }
 }

@@ -1,19 +1,15 @@
 #include "texsynth/exemplar/neighborhood.h"
 
 #include "texsynth/core/error.h"
+#include "texsynth/core/wrap.h"
 
 namespace texsynth {
 namespace {
 
-int wrap(long long i, int n) {
-  long long r = i % n;
-  return int(r < 0 ? r + n : r);
-}
-
 // Toroidal sample positions center + h*d for d in [-r, r], into positions[size].
 void windowPositions(int center, int extent, const NeighborhoodShape& shape, int* positions) {
   int step = shape.spacing % extent;
-  int p = wrap(center - (long long)shape.radius() * shape.spacing, extent);
+  int p = wrapIndex(center - (long long)shape.radius() * shape.spacing, extent);
   for (int i = 0; i < shape.size; ++i) {
     positions[i] = p;
     p += step;

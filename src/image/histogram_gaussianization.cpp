@@ -11,7 +11,9 @@ namespace texsynth {
 
 namespace {
 
-double normalCdf(double x) { return 0.5 * std::erfc(-x / std::sqrt(2.0)); }
+double normalCdf(double x) {
+  return 0.5 * std::erfc(-x / std::sqrt(2.0));
+}
 
 void validate(const Image& exemplar, const GaussianizationOptions& options) {
   if (exemplar.empty()) throw ParameterError("exemplar", "image is empty");
@@ -53,7 +55,10 @@ double inverseNormalCdf(double u) {
 }
 
 InverseLut::InverseLut(int channels, int size, float range, std::vector<float> entries)
-    : channels_(channels), size_(size), range_(range), scale_(float(size - 1) / (2.0f * range)),
+    : channels_(channels),
+      size_(size),
+      range_(range),
+      scale_(float(size - 1) / (2.0f * range)),
       entries_(std::move(entries)) {
   TS_CHECK(size >= 2 && range > 0 && entries_.size() == std::size_t(channels) * size);
 }

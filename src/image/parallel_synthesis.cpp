@@ -1,12 +1,13 @@
 // Parallel synthesis driver: plans, from the requested window down to the coarsest level,
 // the padded region each level must synthesize, then runs upsampling, jitter and correction
 // from the coarsest level up, and finally looks colors up at the finest coordinates.
+#include "texsynth/image/parallel_synthesis.h"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "texsynth/core/parallel.h"
-#include "texsynth/image/parallel_synthesis.h"
 #include "texsynth/image/window_support.h"
 
 namespace texsynth {
@@ -14,7 +15,9 @@ namespace {
 
 constexpr std::int64_t kMaxAbsoluteCoordinate = std::int64_t(1) << 28;
 
-int floorDiv2(int v) { return v >= 0 ? v / 2 : -((1 - v) / 2); }
+int floorDiv2(int v) {
+  return v >= 0 ? v / 2 : -((1 - v) / 2);
+}
 
 struct Region {
   int x0, y0, width, height;
@@ -27,16 +30,13 @@ struct Region {
   SourceCoordinates coordinates() const { return {x0, y0, width, height}; }
 };
 
-void validate(const ExemplarAnalysis& analysis, const ParallelSynthesisOptions& options, int x0, int y0, int w,
-              int h) {
+void validate(const ExemplarAnalysis& analysis, const ParallelSynthesisOptions& options, int x0, int y0, int w, int h) {
   if (analysis.levels.empty() || analysis.width <= 0 || analysis.height <= 0)
     throw ParameterError("analysis", "is empty (run analyzeExemplar first)");
   requireWindow(w, h);
-  if (std::abs(std::int64_t(x0)) >= kMaxAbsoluteCoordinate ||
-      std::abs(std::int64_t(x0) + w) >= kMaxAbsoluteCoordinate)
+  if (std::abs(std::int64_t(x0)) >= kMaxAbsoluteCoordinate || std::abs(std::int64_t(x0) + w) >= kMaxAbsoluteCoordinate)
     throw ParameterError("x0", "window must stay within +-2^28 pixels, got x0 = " + std::to_string(x0));
-  if (std::abs(std::int64_t(y0)) >= kMaxAbsoluteCoordinate ||
-      std::abs(std::int64_t(y0) + h) >= kMaxAbsoluteCoordinate)
+  if (std::abs(std::int64_t(y0)) >= kMaxAbsoluteCoordinate || std::abs(std::int64_t(y0) + h) >= kMaxAbsoluteCoordinate)
     throw ParameterError("y0", "window must stay within +-2^28 pixels, got y0 = " + std::to_string(y0));
   if (options.passes < 0) throw ParameterError("passes", "must be >= 0, got " + std::to_string(options.passes));
   if (!options.jitter.empty() && int(options.jitter.size()) != analysis.levelCount())
@@ -49,8 +49,8 @@ void validate(const ExemplarAnalysis& analysis, const ParallelSynthesisOptions& 
 }  // namespace
 
 SourceCoordinates synthesizeParallelCoordinates(const ExemplarAnalysis& analysis,
-                                                const ParallelSynthesisOptions& options, int x0, int y0, int w,
-                                                int h, Progress& progress) {
+                                                const ParallelSynthesisOptions& options, int x0, int y0, int w, int h,
+                                                Progress& progress) {
   validate(analysis, options, x0, y0, w, h);
   const int levels = analysis.levelCount();
   const int margin = correctionMargin(analysis, options.passes);
@@ -66,7 +66,7 @@ SourceCoordinates synthesizeParallelCoordinates(const ExemplarAnalysis& analysis
     const int spacing = analysis.levels[l].spacing;
     const Region start = corrected[l].grown(margin);
     coords = l == 0 ? tilingCoordinates(start.x0, start.y0, start.width, start.height, spacing, analysis.width,
-                                                analysis.height)
+                                        analysis.height)
                     : upsampleCoordinates(coords, start.coordinates(), spacing, analysis.width, analysis.height);
     const float strength = options.jitter.empty() ? options.defaultJitter : options.jitter[l];
     jitterCoordinates(coords, l, spacing, strength, options.seed, analysis.width, analysis.height);
@@ -82,8 +82,8 @@ SourceCoordinates synthesizeParallelCoordinates(const ExemplarAnalysis& analysis
 Image lookupColors(const Image& image, const SourceCoordinates& coords, int channels) {
   if (image.empty()) throw ParameterError("image", "is empty");
   if (channels < 0 || channels > image.channels)
-    throw ParameterError("channels", "must be in [0, " + std::to_string(image.channels) + "], got " +
-                                         std::to_string(channels));
+    throw ParameterError("channels",
+                         "must be in [0, " + std::to_string(image.channels) + "], got " + std::to_string(channels));
   if (channels == 0) channels = image.channels;
   Image out(coords.width, coords.height, channels);
   parallelForChunks(0, coords.height, kRowChunk, [&](std::int64_t begin, std::int64_t end) {

@@ -7,20 +7,21 @@
 #include <limits>
 
 #include "texsynth/core/parallel.h"
+#include "texsynth/core/wrap.h"
 #include "texsynth/image/parallel_synthesis.h"
 #include "texsynth/image/window_support.h"
 
 namespace texsynth {
 namespace {
 
-int wrap(int v, int m) {
-  int r = v % m;
-  return r < 0 ? r + m : r;
-}
-int parity(int v) { return v & 1; }  // two's complement: also right for negative v
+int parity(int v) {
+  return v & 1;
+}  // two's complement: also right for negative v
 
 // Radius of everything a corrected pixel reads: its neighborhood and the 3x3 candidate sources.
-int readRadius(const ExemplarAnalysis& analysis) { return std::max(analysis.neighborhoodSize / 2, 1); }
+int readRadius(const ExemplarAnalysis& analysis) {
+  return std::max(analysis.neighborhoodSize / 2, 1);
+}
 
 // Gathers and projects the neighborhoods of synthesized pixels at one level.
 class NeighborhoodProjector {
@@ -88,8 +89,8 @@ void correctSubpass(const ExemplarAnalysis& analysis, int level, const SourceCoo
         std::int32_t bestPixel = analysis.pixelIndex(current[0], current[1]);
         for (const auto& d : kOffsets) {
           const std::int32_t* neighbor = before.at(x + d[0], y + d[1]);
-          const int cx = wrap(neighbor[0] - spacing * d[0], analysis.width);
-          const int cy = wrap(neighbor[1] - spacing * d[1], analysis.height);
+          const int cx = wrapIndex(neighbor[0] - spacing * d[0], analysis.width);
+          const int cy = wrapIndex(neighbor[1] - spacing * d[1], analysis.height);
           const std::int32_t* similar = analysis.similarAt(level, analysis.pixelIndex(cx, cy));
           for (int i = 0; i < k; ++i) {
             const float distance = projector.distanceTo(query.data(), similar[i]);
@@ -105,7 +106,9 @@ void correctSubpass(const ExemplarAnalysis& analysis, int level, const SourceCoo
 
 }  // namespace
 
-int correctionMargin(const ExemplarAnalysis& analysis, int passes) { return passes * 4 * readRadius(analysis); }
+int correctionMargin(const ExemplarAnalysis& analysis, int passes) {
+  return passes * 4 * readRadius(analysis);
+}
 
 SourceCoordinates correctCoordinates(const ExemplarAnalysis& analysis, int level, const SourceCoordinates& coords) {
   static constexpr int kSubpassOrder[4][2] = {{0, 0}, {1, 1}, {1, 0}, {0, 1}};

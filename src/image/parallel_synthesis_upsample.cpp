@@ -4,6 +4,7 @@
 
 #include "texsynth/core/parallel.h"
 #include "texsynth/core/random.h"
+#include "texsynth/core/wrap.h"
 #include "texsynth/image/parallel_synthesis.h"
 #include "texsynth/image/window_support.h"
 
@@ -11,12 +12,9 @@ namespace texsynth {
 namespace {
 
 // Floor division and non-negative modulo for negative absolute positions.
-int floorDiv2(int v) { return v >= 0 ? v / 2 : -((1 - v) / 2); }
-int wrap(std::int64_t v, int m) {
-  std::int64_t r = v % m;
-  return int(r < 0 ? r + m : r);
+int floorDiv2(int v) {
+  return v >= 0 ? v / 2 : -((1 - v) / 2);
 }
-
 }  // namespace
 
 SourceCoordinates tilingCoordinates(int x0, int y0, int width, int height, int spacing, int exemplarWidth,
@@ -24,8 +22,8 @@ SourceCoordinates tilingCoordinates(int x0, int y0, int width, int height, int s
   SourceCoordinates out(x0, y0, width, height);
   for (int y = y0; y < y0 + height; ++y)
     for (int x = x0; x < x0 + width; ++x) {
-      out.at(x, y)[0] = wrap(std::int64_t(x) * spacing, exemplarWidth);
-      out.at(x, y)[1] = wrap(std::int64_t(y) * spacing, exemplarHeight);
+      out.at(x, y)[0] = wrapIndex(std::int64_t(x) * spacing, exemplarWidth);
+      out.at(x, y)[1] = wrapIndex(std::int64_t(y) * spacing, exemplarHeight);
     }
   return out;
 }
@@ -45,8 +43,8 @@ SourceCoordinates upsampleCoordinates(const SourceCoordinates& parent, const Sou
         const int px = floorDiv2(x);
         const std::int32_t* source = parent.at(px, py);
         std::int32_t* target = out.at(x, y);
-        target[0] = wrap(std::int64_t(source[0]) + offset[x - 2 * px], exemplarWidth);
-        target[1] = wrap(std::int64_t(source[1]) + offset[y - 2 * py], exemplarHeight);
+        target[0] = wrapIndex(std::int64_t(source[0]) + offset[x - 2 * px], exemplarWidth);
+        target[1] = wrapIndex(std::int64_t(source[1]) + offset[y - 2 * py], exemplarHeight);
       }
     }
   });
@@ -66,8 +64,9 @@ void jitterCoordinates(SourceCoordinates& coords, int level, int spacing, float 
         const double xiX = 2.0 * uniform01(hashKey(seed, id, std::uint64_t(level), 0)) - 1.0;
         const double xiY = 2.0 * uniform01(hashKey(seed, id, std::uint64_t(level), 1)) - 1.0;
         std::int32_t* target = coords.at(x, y);
-        target[0] = wrap(std::int64_t(target[0]) + std::int64_t(std::floor(amplitude * xiX + 0.5)), exemplarWidth);
-        target[1] = wrap(std::int64_t(target[1]) + std::int64_t(std::floor(amplitude * xiY + 0.5)), exemplarHeight);
+        target[0] = wrapIndex(std::int64_t(target[0]) + std::int64_t(std::floor(amplitude * xiX + 0.5)), exemplarWidth);
+        target[1] =
+            wrapIndex(std::int64_t(target[1]) + std::int64_t(std::floor(amplitude * xiY + 0.5)), exemplarHeight);
       }
     }
   });

@@ -45,7 +45,7 @@ void TileBlendTexture::sample(double x, double y, float* color) const {
   for (int k = 0; k < 3; ++k) {
     double offset[2];
     vertexOffset(tri.vertexI[k], tri.vertexJ[k], offset);
-    sampleWrapped(g, x + offset[0], y + offset[1], tiles[k]);
+    g.sampleBilinearWrapped(x + offset[0], y + offset[1], tiles[k]);
   }
   varianceBlend(values, tri.weight, 3, g.channels, 0.0f, blended);
   gaussianized_.toColor(blended, color);
@@ -56,8 +56,7 @@ Image TileBlendTexture::synthesizeWindow(std::int64_t x0, std::int64_t y0, int w
   Image out(width, height, gaussianized_.gaussian.channels);
   parallelForChunks(0, height, kRowChunk, [&](std::int64_t rowBegin, std::int64_t rowEnd) {
     for (std::int64_t y = rowBegin; y < rowEnd; ++y)
-      for (int x = 0; x < width; ++x)
-        sample(double(x0 + x) + 0.5, double(y0 + y) + 0.5, out.pixel(x, int(y)));
+      for (int x = 0; x < width; ++x) sample(double(x0 + x) + 0.5, double(y0 + y) + 0.5, out.pixel(x, int(y)));
   });
   return out;
 }

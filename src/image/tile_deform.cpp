@@ -80,7 +80,7 @@ void TileDeformTexture::sourcePosition(double x, double y, double source[2]) con
 void TileDeformTexture::sample(double x, double y, float* color) const {
   double source[2];
   sourcePosition(x, y, source);
-  sampleWrapped(exemplar_, source[0], source[1], color);
+  exemplar_.sampleBilinearWrapped(source[0], source[1], color);
 }
 
 Image TileDeformTexture::synthesizeWindow(std::int64_t x0, std::int64_t y0, int width, int height) const {
@@ -111,9 +111,10 @@ Image TileDeformTexture::synthesizeWindow(std::int64_t x0, std::int64_t y0, int 
         const CellCoordinate cx = columns[x];
         const float *d00 = corner(cx.cell, cy.cell), *d10 = corner(cx.cell + 1, cy.cell);
         const float *d01 = corner(cx.cell, cy.cell + 1), *d11 = corner(cx.cell + 1, cy.cell + 1);
-        double sourceX = warpedCoordinate(double(x0 + x) + 0.5, cx.fraction, cy.fraction, d00[0], d10[0], d01[0], d11[0]);
+        double sourceX =
+            warpedCoordinate(double(x0 + x) + 0.5, cx.fraction, cy.fraction, d00[0], d10[0], d01[0], d11[0]);
         double sourceY = warpedCoordinate(py, cx.fraction, cy.fraction, d00[1], d10[1], d01[1], d11[1]);
-        sampleWrapped(exemplar_, sourceX, sourceY, dst + std::size_t(x) * out.channels);
+        exemplar_.sampleBilinearWrapped(sourceX, sourceY, dst + std::size_t(x) * out.channels);
       }
     }
   });

@@ -59,7 +59,7 @@ class TriplanarTileBlendSolid final : public SolidTexture {
       // Each plane has its own random tile offsets, so the three planes are independent.
       const std::uint64_t key = hashKey(options_.seed, latticeId(tri.vertexI[k], tri.vertexJ[k], axis), 0, 0x50d1);
       const double offsetX = double(uniform01(key)) * g.width, offsetY = double(uniform01(mix64(key))) * g.height;
-      sampleWrapped(g, double(uv.x()) + offsetX, double(uv.y()) + offsetY, tiles[k]);
+      g.sampleBilinearWrapped(double(uv.x()) + offsetX, double(uv.y()) + offsetY, tiles[k]);
     }
     varianceBlend(values, tri.weight, 3, g.channels, 0.0f, out);
   }

@@ -59,11 +59,11 @@ class InternalError : public Error {
 }  // namespace texsynth
 
 // Internal invariants. Not for validating user input: throw InputError/ParameterError there.
-#define TS_CHECK(cond)                                                   \
-  do {                                                                   \
-    if (!(cond)) ::texsynth::failCheck(#cond, __FILE__, __LINE__, {});   \
+#define TS_CHECK(cond)                                                 \
+  do {                                                                 \
+    if (!(cond)) ::texsynth::failCheck(#cond, __FILE__, __LINE__, {}); \
   } while (0)
-#define TS_CHECK_MSG(cond, msg)                                          \
-  do {                                                                   \
-    if (!(cond)) ::texsynth::failCheck(#cond, __FILE__, __LINE__, msg);  \
+#define TS_CHECK_MSG(cond, msg)                                         \
+  do {                                                                  \
+    if (!(cond)) ::texsynth::failCheck(#cond, __FILE__, __LINE__, msg); \
   } while (0)

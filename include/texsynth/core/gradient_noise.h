@@ -13,6 +13,7 @@
 #include <cstdint>
 
 #include "texsynth/core/random.h"
+#include "texsynth/core/wrap.h"
 
 namespace texsynth {
 
@@ -29,21 +30,23 @@ inline constexpr float kGradients2[16][2] = {
 
 // Perlin's 12 cube-edge directions (2002), normalized to unit length.
 inline constexpr float kEdge = 0.707106781f;
-inline constexpr float kGradients3[12][3] = {
-    {kEdge, kEdge, 0},  {-kEdge, kEdge, 0},  {kEdge, -kEdge, 0},  {-kEdge, -kEdge, 0},
-    {kEdge, 0, kEdge},  {-kEdge, 0, kEdge},  {kEdge, 0, -kEdge},  {-kEdge, 0, -kEdge},
-    {0, kEdge, kEdge},  {0, -kEdge, kEdge},  {0, kEdge, -kEdge},  {0, -kEdge, -kEdge}};
+inline constexpr float kGradients3[12][3] = {{kEdge, kEdge, 0},   {-kEdge, kEdge, 0},  {kEdge, -kEdge, 0},
+                                             {-kEdge, -kEdge, 0}, {kEdge, 0, kEdge},   {-kEdge, 0, kEdge},
+                                             {kEdge, 0, -kEdge},  {-kEdge, 0, -kEdge}, {0, kEdge, kEdge},
+                                             {0, -kEdge, kEdge},  {0, kEdge, -kEdge},  {0, -kEdge, -kEdge}};
 
 // Quintic fade 6t^5 - 15t^4 + 10t^3: zero first and second derivatives at 0 and 1.
-inline float fade(float t) { return t * t * t * (t * (t * 6.0f - 15.0f) + 10.0f); }
-
-inline std::int64_t wrapLattice(std::int64_t i, int period) {
-  if (period <= 0) return i;
-  std::int64_t r = i % period;
-  return r < 0 ? r + period : r;
+inline float fade(float t) {
+  return t * t * t * (t * (t * 6.0f - 15.0f) + 10.0f);
 }
 
-inline float lerp(float a, float b, float t) { return a + (b - a) * t; }
+inline std::int64_t wrapLattice(std::int64_t i, int period) {
+  return period <= 0 ? i : wrapIndex(i, period);
+}
+
+inline float lerp(float a, float b, float t) {
+  return a + (b - a) * t;
+}
 
 inline float corner2(std::uint64_t seed, std::int64_t ix, std::int64_t iy, float dx, float dy) {
   const float* g = kGradients2[hashKey(seed, latticeId(ix, iy)) & 15u];
@@ -84,11 +87,12 @@ inline float gradientNoise3(float x, float y, float z, std::uint64_t seed, int p
   std::int64_t y0 = wrapLattice(iy, periodY), y1 = wrapLattice(iy + 1, periodY);
   std::int64_t z0 = wrapLattice(iz, periodZ), z1 = wrapLattice(iz + 1, periodZ);
   float u = fade(dx), v = fade(dy), w = fade(dz);
-  float front = lerp(lerp(corner3(seed, x0, y0, z0, dx, dy, dz), corner3(seed, x1, y0, z0, dx - 1, dy, dz), u),
-                     lerp(corner3(seed, x0, y1, z0, dx, dy - 1, dz), corner3(seed, x1, y1, z0, dx - 1, dy - 1, dz), u), v);
-  float back = lerp(lerp(corner3(seed, x0, y0, z1, dx, dy, dz - 1), corner3(seed, x1, y0, z1, dx - 1, dy, dz - 1), u),
-                    lerp(corner3(seed, x0, y1, z1, dx, dy - 1, dz - 1), corner3(seed, x1, y1, z1, dx - 1, dy - 1, dz - 1), u),
-                    v);
+  float front =
+      lerp(lerp(corner3(seed, x0, y0, z0, dx, dy, dz), corner3(seed, x1, y0, z0, dx - 1, dy, dz), u),
+           lerp(corner3(seed, x0, y1, z0, dx, dy - 1, dz), corner3(seed, x1, y1, z0, dx - 1, dy - 1, dz), u), v);
+  float back = lerp(
+      lerp(corner3(seed, x0, y0, z1, dx, dy, dz - 1), corner3(seed, x1, y0, z1, dx - 1, dy, dz - 1), u),
+      lerp(corner3(seed, x0, y1, z1, dx, dy - 1, dz - 1), corner3(seed, x1, y1, z1, dx - 1, dy - 1, dz - 1), u), v);
   constexpr float kNormalize = 1.15470054f;  // 2 / sqrt(3)
   return kNormalize * lerp(front, back, w);
 }

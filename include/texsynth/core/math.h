@@ -1,9 +1,8 @@
 #pragma once
 // Linear-algebra vocabulary (Eigen) and orientation frames built from quaternions.
-#include <limits>
-
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <limits>
 
 namespace texsynth {
 

@@ -8,7 +8,8 @@
 namespace texsynth {
 
 // Calls body(i) for i in [begin, end), in parallel. body must not depend on call order.
-void parallelFor(std::int64_t begin, std::int64_t end, const std::function<void(std::int64_t)>& body, std::int64_t grain = 1);
+void parallelFor(std::int64_t begin, std::int64_t end, const std::function<void(std::int64_t)>& body,
+                 std::int64_t grain = 1);
 
 // Calls body(chunkBegin, chunkEnd) over [begin, end) in chunks of at most `grain`.
 void parallelForChunks(std::int64_t begin, std::int64_t end, std::int64_t grain,

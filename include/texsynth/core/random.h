@@ -14,7 +14,8 @@ constexpr std::uint64_t mix64(std::uint64_t x) {
 }
 
 // Hash of a random choice's full identity.
-constexpr std::uint64_t hashKey(std::uint64_t seed, std::uint64_t element, std::uint64_t level = 0, std::uint64_t pass = 0) {
+constexpr std::uint64_t hashKey(std::uint64_t seed, std::uint64_t element, std::uint64_t level = 0,
+                                std::uint64_t pass = 0) {
   std::uint64_t h = mix64(seed);
   h = mix64(h ^ element);
   h = mix64(h ^ (level * 0x100000001b3ull));
@@ -22,7 +23,9 @@ constexpr std::uint64_t hashKey(std::uint64_t seed, std::uint64_t element, std::
 }
 
 // Uniform float in [0,1) from a key.
-constexpr float uniform01(std::uint64_t key) { return float(key >> 40) * (1.0f / 16777216.0f); }
+constexpr float uniform01(std::uint64_t key) {
+  return float(key >> 40) * (1.0f / 16777216.0f);
+}
 
 // Uniform integer in [0,n) from a key.
 constexpr std::uint32_t uniformBelow(std::uint64_t key, std::uint32_t n) {
@@ -31,7 +34,8 @@ constexpr std::uint32_t uniformBelow(std::uint64_t key, std::uint32_t n) {
 
 // Element id of a 2D/3D lattice point, for use as the `element` of hashKey.
 constexpr std::uint64_t latticeId(std::int64_t x, std::int64_t y, std::int64_t z = 0) {
-  return mix64(std::uint64_t(x) * 0x9e3779b97f4a7c15ull ^ mix64(std::uint64_t(y) * 0xc2b2ae3d27d4eb4full ^ mix64(std::uint64_t(z))));
+  return mix64(std::uint64_t(x) * 0x9e3779b97f4a7c15ull ^
+               mix64(std::uint64_t(y) * 0xc2b2ae3d27d4eb4full ^ mix64(std::uint64_t(z))));
 }
 
 // A small sequential generator for places that need a stream (seeded from a key).
