@@ -66,5 +66,6 @@ Command registerRenderCommand(CLI::App& app, const GlobalOptions& globals);
 Command registerInfoCommand(CLI::App& app, const GlobalOptions& globals);
 Command registerImageCommand(CLI::App& app, const GlobalOptions& globals);
 Command registerSolidCommand(CLI::App& app, const GlobalOptions& globals);
+Command registerFieldCommand(CLI::App& app, const GlobalOptions& globals);
 
 }  // namespace texsynth::cli

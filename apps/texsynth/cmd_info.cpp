@@ -1,8 +1,9 @@
-// texsynth info FILE: what an image, mesh or volume file holds.
+// texsynth info FILE: what an image, mesh, volume or rotation-field file holds.
 #include <algorithm>
 #include <cstdio>
 
 #include "cli_common.h"
+#include "texsynth/field/field_io.h"
 #include "texsynth/io/file_kind.h"
 #include "texsynth/io/image_io.h"
 #include "texsynth/io/mesh_io.h"
@@ -59,6 +60,24 @@ static json describeVolume(const std::string& path) {
           {"channel_stats", channelStats(volume.voxels, volume.channels)}};
 }
 
+static json describeField(const std::string& path) {
+  FieldFile field = readField(path);
+  const FieldGrid& grid = field.rotations.grid();
+  // How far the frames turn from the identity, to tell a designed field from a trivial one.
+  double sum = 0, largest = 0;
+  for (const Quatf& q : field.rotations.rotations()) {
+    const double angle = rotationAngleDegrees(q, Quatf::Identity());
+    sum += angle, largest = std::max(largest, angle);
+  }
+  const auto nodes = double(field.rotations.rotations().size());
+  return {{"kind", "rotation field"},
+          {"nodes", {grid.nodes.x(), grid.nodes.y(), grid.nodes.z()}},
+          {"origin", {grid.origin.x(), grid.origin.y(), grid.origin.z()}},
+          {"spacing", grid.spacing},
+          {"has_scale", field.hasScale},
+          {"rotation_from_identity_degrees", {{"mean", nodes > 0 ? sum / nodes : 0.0}, {"max", largest}}}};
+}
+
 static void printHuman(const std::string& path, const json& d) {
   std::printf("%s: %s\n", path.c_str(), d["kind"].get<std::string>().c_str());
   for (auto& [key, value] : d.items())
@@ -66,11 +85,11 @@ static void printHuman(const std::string& path, const json& d) {
 }
 
 Command registerInfoCommand(CLI::App& app, const GlobalOptions& globals) {
-  auto* sub = app.add_subcommand("info", "Print what an image, mesh or volume file holds");
+  auto* sub = app.add_subcommand("info", "Print what an image, mesh, volume or rotation-field file holds");
   auto path = std::make_shared<std::string>();
   sub->add_option("FILE", *path,
-                  "Image (" + readableImageExtensions() + "), mesh (" + readableMeshExtensions() + ") or volume (" +
-                      readableVolumeExtensions() + ")")
+                  "Image (" + readableImageExtensions() + "), mesh (" + readableMeshExtensions() + "), volume (" +
+                      readableVolumeExtensions() + ") or rotation field (" + readableFieldExtensions() + ")")
       ->required();
   return {sub, [path, &globals] {
             json d;
@@ -84,10 +103,14 @@ Command registerInfoCommand(CLI::App& app, const GlobalOptions& globals) {
               case FileKind::Volume:
                 d = describeVolume(*path);
                 break;
+              case FileKind::Field:
+                d = describeField(*path);
+                break;
               case FileKind::Unknown:
                 throw InputError(*path, "unknown file type; texsynth reads images (" + readableImageExtensions() +
-                                            "), meshes (" + readableMeshExtensions() + ") and volumes (" +
-                                            readableVolumeExtensions() + ")");
+                                            "), meshes (" + readableMeshExtensions() + "), volumes (" +
+                                            readableVolumeExtensions() + ") and rotation fields (" +
+                                            readableFieldExtensions() + ")");
             }
             d["file"] = *path;
             if (globals.json)

@@ -11,6 +11,7 @@ namespace texsynth {
 static constexpr std::array<std::string_view, 7> kImage = {"png", "jpg", "jpeg", "bmp", "tga", "exr", "pat"};
 static constexpr std::array<std::string_view, 4> kMesh = {"obj", "ply", "off", "stl"};
 static constexpr std::array<std::string_view, 1> kVolume = {"nrrd"};
+static constexpr std::array<std::string_view, 1> kField = {"tsfield"};
 
 template <std::size_t N>
 static bool contains(const std::array<std::string_view, N>& list, const std::string& ext) {
@@ -29,11 +30,21 @@ FileKind fileKind(const std::string& path) {
   if (contains(kImage, ext)) return FileKind::Image;
   if (contains(kMesh, ext)) return FileKind::Mesh;
   if (contains(kVolume, ext)) return FileKind::Volume;
+  if (contains(kField, ext)) return FileKind::Field;
   return FileKind::Unknown;
 }
 
-std::string readableImageExtensions() { return join(kImage); }
-std::string readableMeshExtensions() { return join(kMesh); }
-std::string readableVolumeExtensions() { return join(kVolume); }
+std::string readableImageExtensions() {
+  return join(kImage);
+}
+std::string readableMeshExtensions() {
+  return join(kMesh);
+}
+std::string readableVolumeExtensions() {
+  return join(kVolume);
+}
+std::string readableFieldExtensions() {
+  return join(kField);
+}
 
 }  // namespace texsynth

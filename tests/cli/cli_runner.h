@@ -1,5 +1,6 @@
 #pragma once
 // Runs the texsynth binary the way a user would, capturing exit code, stdout and stderr.
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 
 #include <cstdlib>
@@ -33,6 +34,13 @@ inline int lineCount(const std::string& text) {
   int lines = 0;
   for (char c : text) lines += c == '\n';
   return lines;
+}
+
+// The run failed with `exitCode` and one stderr line that mentions `mention`.
+inline void expectOneLineError(const RunResult& r, int exitCode, const std::string& mention) {
+  EXPECT_EQ(r.exitCode, exitCode) << r.err;
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find(mention), std::string::npos) << r.err;
 }
 
 }  // namespace texsynth::test

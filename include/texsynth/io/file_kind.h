@@ -4,12 +4,13 @@
 
 namespace texsynth {
 
-enum class FileKind { Image, Mesh, Volume, Unknown };
+enum class FileKind { Image, Mesh, Volume, Field, Unknown };
 
 FileKind fileKind(const std::string& path);
 // Human-readable lists of the extensions texsynth reads, for error messages and --help.
 std::string readableImageExtensions();
 std::string readableMeshExtensions();
 std::string readableVolumeExtensions();
+std::string readableFieldExtensions();
 
 }  // namespace texsynth

@@ -1,0 +1,171 @@
+#include "texsynth/field/surface_projector.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "texsynth/core/error.h"
+
+namespace texsynth {
+
+namespace {
+
+// Closest point of segment ab to p as the weight t of b (a + t (b - a)), t in [0, 1].
+float segmentWeight(const Vec3f& p, const Vec3f& a, const Vec3f& b) {
+  const Vec3f ab = b - a;
+  const float length2 = ab.squaredNorm();
+  return length2 > 0 ? std::clamp((p - a).dot(ab) / length2, 0.0f, 1.0f) : 0.0f;
+}
+
+// Closest point on triangle abc to p, with its barycentric weights: p's projection onto the
+// triangle's plane when that falls inside, otherwise the nearest point of the three edges.
+Vec3f closestOnTriangle(const Vec3f& p, const Vec3f& a, const Vec3f& b, const Vec3f& c, Vec3f& weights) {
+  const Vec3f n = (b - a).cross(c - a);
+  const float area2 = n.squaredNorm();
+  if (area2 > 0) {
+    const Vec3f q = p - ((p - a).dot(n) / area2) * n;
+    const float wa = (c - b).cross(q - b).dot(n) / area2, wb = (a - c).cross(q - c).dot(n) / area2;
+    if (wa >= 0 && wb >= 0 && wa + wb <= 1) {
+      weights = {wa, wb, 1 - wa - wb};
+      return q;
+    }
+  }
+  const Vec3f corners[3] = {a, b, c};
+  float best = std::numeric_limits<float>::infinity();
+  Vec3f closest = a;
+  weights = {1, 0, 0};
+  for (int edge = 0; edge < 3; ++edge) {
+    const int i = edge, j = (edge + 1) % 3;
+    const float t = segmentWeight(p, corners[i], corners[j]);
+    const Vec3f point = corners[i] + t * (corners[j] - corners[i]);
+    const float distance = (p - point).squaredNorm();
+    if (distance < best) {
+      best = distance, closest = point;
+      weights = Vec3f::Zero();
+      weights[i] = 1 - t, weights[j] = t;
+    }
+  }
+  return closest;
+}
+
+}  // namespace
+
+struct SurfaceProjector::Impl {
+  Mesh mesh;
+  Box3f box;
+  float cell = 1;
+  Vec3i cells = Vec3i::Ones();
+  std::vector<std::vector<int>> buckets;
+
+  Vec3i cellOf(const Vec3f& p) const {
+    Vec3i c;
+    for (int a = 0; a < 3; ++a) c[a] = std::clamp(int(std::floor((p[a] - box.min[a]) / cell)), 0, cells[a] - 1);
+    return c;
+  }
+  const std::vector<int>& bucket(const Vec3i& c) const {
+    return buckets[std::size_t((std::int64_t(c.z()) * cells.y() + c.y()) * cells.x() + c.x())];
+  }
+};
+
+SurfaceProjector::SurfaceProjector(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
+  if (mesh.triangles.empty()) throw InputError("mesh", "has no triangles to snap sketch points to");
+  Impl& m = *impl_;
+  m.mesh.positions = mesh.positions;
+  m.mesh.triangles = mesh.triangles;
+  m.mesh.normals = mesh.normals;
+  if (m.mesh.normals.size() != m.mesh.positions.size()) m.mesh.computeNormals();
+  m.box = mesh.bounds();
+  // About two triangles per cell on average, cubic cells.
+  Vec3f size = m.box.size().cwiseMax(Vec3f::Constant(1e-6f * std::max(1.0f, m.box.size().maxCoeff())));
+  double volume = double(size.x()) * size.y() * size.z();
+  m.cell = float(std::cbrt(volume / std::max<std::size_t>(1, mesh.triangles.size() / 2)));
+  m.cell = std::max(m.cell, size.maxCoeff() / 256.0f);
+  for (int a = 0; a < 3; ++a) m.cells[a] = std::max(1, int(std::ceil(size[a] / m.cell)));
+  m.buckets.resize(std::size_t(m.cells.x()) * m.cells.y() * m.cells.z());
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    Box3f tb;
+    for (int v = 0; v < 3; ++v) tb.extend(mesh.positions[std::size_t(mesh.triangles[t][v])]);
+    Vec3i lo = m.cellOf(tb.min), hi = m.cellOf(tb.max);
+    for (int z = lo.z(); z <= hi.z(); ++z)
+      for (int y = lo.y(); y <= hi.y(); ++y)
+        for (int x = lo.x(); x <= hi.x(); ++x)
+          m.buckets[std::size_t((std::int64_t(z) * m.cells.y() + y) * m.cells.x() + x)].push_back(int(t));
+  }
+}
+
+SurfaceProjector::~SurfaceProjector() = default;
+SurfaceProjector::SurfaceProjector(SurfaceProjector&&) noexcept = default;
+SurfaceProjector& SurfaceProjector::operator=(SurfaceProjector&&) noexcept = default;
+
+const Box3f& SurfaceProjector::bounds() const {
+  return impl_->box;
+}
+
+SurfacePoint SurfaceProjector::closestPoint(const Vec3f& p) const {
+  const Impl& m = *impl_;
+  const Vec3i start = m.cellOf(p);
+  // Distance from p to the start cell: unvisited cells lie at least ring*cell - gap away.
+  Vec3f cellMin = m.box.min + m.cell * start.cast<float>();
+  float gap = (p - p.cwiseMax(cellMin).cwiseMin(cellMin + Vec3f::Constant(m.cell))).norm();
+  float best = std::numeric_limits<float>::max();
+  int bestTriangle = -1;
+  Vec3f bestPoint = p, bestWeights(1, 0, 0);
+  const int maxRing = m.cells.maxCoeff();
+  for (int ring = 0; ring <= maxRing; ++ring) {
+    for (int z = start.z() - ring; z <= start.z() + ring; ++z)
+      for (int y = start.y() - ring; y <= start.y() + ring; ++y)
+        for (int x = start.x() - ring; x <= start.x() + ring; ++x) {
+          Vec3i c(x, y, z);
+          if ((c - start).cwiseAbs().maxCoeff() != ring) continue;
+          if ((c.array() < 0).any() || (c.array() >= m.cells.array()).any()) continue;
+          for (int t : m.bucket(c)) {
+            const Vec3i& tri = m.mesh.triangles[std::size_t(t)];
+            Vec3f weights;
+            Vec3f q = closestOnTriangle(p, m.mesh.positions[tri[0]], m.mesh.positions[tri[1]], m.mesh.positions[tri[2]],
+                                        weights);
+            float d = (q - p).squaredNorm();
+            // Ties go to the smaller index, so the answer never depends on visiting order.
+            if (d < best || (d == best && t < bestTriangle))
+              best = d, bestTriangle = t, bestPoint = q, bestWeights = weights;
+          }
+        }
+    float reach = float(ring) * m.cell - gap;
+    if (bestTriangle >= 0 && reach > 0 && best <= reach * reach) break;
+  }
+  const Vec3i& tri = m.mesh.triangles[std::size_t(bestTriangle)];
+  Vec3f normal = bestWeights[0] * m.mesh.normals[tri[0]] + bestWeights[1] * m.mesh.normals[tri[1]] +
+                 bestWeights[2] * m.mesh.normals[tri[2]];
+  if (!(normal.norm() > 1e-12f)) {
+    const auto& pos = m.mesh.positions;
+    normal = (pos[tri[1]] - pos[tri[0]]).cross(pos[tri[2]] - pos[tri[0]]);
+  }
+  return {bestPoint, normal.normalized(), std::sqrt(best)};
+}
+
+bool SurfaceProjector::inside(const Vec3f& p) const {
+  const Impl& m = *impl_;
+  if ((p.array() < m.box.min.array()).any() || (p.array() > m.box.max.array()).any()) return false;
+  Vec3i start = m.cellOf(p);
+  std::vector<int> candidates;
+  for (int x = start.x(); x < m.cells.x(); ++x) {
+    const auto& b = m.bucket({x, start.y(), start.z()});
+    candidates.insert(candidates.end(), b.begin(), b.end());
+  }
+  std::sort(candidates.begin(), candidates.end());
+  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+  int crossings = 0;
+  for (int t : candidates) {
+    const Vec3i& tri = m.mesh.triangles[std::size_t(t)];
+    // The ray p + s * (1, 0, 0), s > 0: 2D point-in-triangle test in the (y, z) plane.
+    Vec3f a = m.mesh.positions[tri[0]] - p, b = m.mesh.positions[tri[1]] - p, c = m.mesh.positions[tri[2]] - p;
+    auto edge = [](const Vec3f& u, const Vec3f& v) { return u.y() * v.z() - u.z() * v.y(); };
+    float e0 = edge(a, b), e1 = edge(b, c), e2 = edge(c, a);
+    if (!((e0 > 0 && e1 > 0 && e2 > 0) || (e0 < 0 && e1 < 0 && e2 < 0))) continue;
+    float sum = e0 + e1 + e2;
+    float x = (e1 * a.x() + e2 * b.x() + e0 * c.x()) / sum;
+    crossings += x > 0;
+  }
+  return crossings % 2 == 1;
+}
+
+}  // namespace texsynth
