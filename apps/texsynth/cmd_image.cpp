@@ -1,12 +1,11 @@
-// texsynth image EXEMPLAR --method tile-deform|tile-blend: a 2D texture of any size, or any
-// window of the infinite texture, from one exemplar.
+// texsynth image EXEMPLAR --method tile-deform|tile-blend|parallel|optimize: a 2D texture of any
+// size (or any window of the infinite texture, for the random-access methods) from one exemplar;
+// or, with --apply-coords, another map of the same material through a stored synthesis.
 #include <chrono>
 #include <cstdio>
 
-#include "cli_common.h"
-#include "texsynth/exemplar/analysis_cache.h"
+#include "image_args.h"
 #include "texsynth/image/make_tileable.h"
-#include "texsynth/image/parallel_synthesis.h"
 #include "texsynth/image/tile_blend.h"
 #include "texsynth/image/tile_deform.h"
 #include "texsynth/io/file_kind.h"
@@ -17,50 +16,6 @@ namespace texsynth::cli {
 using nlohmann::json;
 
 namespace {
-
-struct ImageArgs {
-  std::string exemplar, output, method = "tile-deform", size = "512", window;
-  std::string tileable = "auto", saveTileable, coords;
-  float seamThreshold = 1.5f;
-  // tile-deform
-  std::string cell = "0", lambda = "0.35", directions = "both";
-  float clamp = 0.45f, noiseFrequency = 0.6f;
-  // tile-blend
-  float tileSize = 0, blendExponent = 2.0f;
-  // parallel
-  int passes = 2;
-  std::string jitter;
-};
-
-// Source coordinates as a two-channel float image (x, y into the exemplar), for --coords.
-Image coordinateImage(const SourceCoordinates& coords) {
-  Image image(coords.width, coords.height, 2);
-  for (std::size_t i = 0; i < coords.xy.size(); ++i) image.pixels[i] = float(coords.xy[i]);
-  return image;
-}
-
-// Lefebvre & Hoppe 2005 on the (cached) exemplar analysis.
-Image synthesizeParallelWindow(const Image& exemplar, const ImageArgs& args, const Window& window,
-                               const GlobalOptions& globals, json& report) {
-  const std::int64_t limit = std::int64_t(1) << 28;
-  if (window.x < -limit || window.x > limit || window.y < -limit || window.y > limit)
-    throw ParameterError("--window", "parallel synthesis needs X and Y within +-2^28");
-  auto progress = makeProgress(globals);
-  ExemplarAnalysis analysis = analyzeExemplarCached(exemplar, AnalysisOptions{}, defaultCacheDirectory(), *progress);
-  ParallelSynthesisOptions options;
-  options.seed = globals.seed;
-  options.passes = args.passes;
-  if (!args.jitter.empty()) {
-    auto [coarse, rest] = parseFloatPair(args.jitter, "--jitter");
-    options.jitter.assign(analysis.levelCount(), rest);
-    options.jitter[0] = coarse;
-  }
-  SourceCoordinates coords = synthesizeParallelCoordinates(analysis, options, int(window.x), int(window.y),
-                                                           window.width, window.height, *progress);
-  if (!args.coords.empty()) writeImage(args.coords, coordinateImage(coords));
-  report["levels"] = analysis.levelCount();
-  return lookupColors(exemplar, coords);
-}
 
 DeformDirections parseDirections(const std::string& text) {
   if (text == "both") return DeformDirections::Both;
@@ -83,6 +38,9 @@ Image prepareExemplar(const ImageArgs& args, json& report) {
   return exemplar;
 }
 
+void finish(const ImageArgs& args, const GlobalOptions& globals, const Window& window, Image result, double seconds,
+            json& report);
+
 void runImage(const ImageArgs& args, const GlobalOptions& globals) {
   if (fileKind(args.output) != FileKind::Image)
     throw ParameterError("--output",
@@ -95,6 +53,15 @@ void runImage(const ImageArgs& args, const GlobalOptions& globals) {
     window.width = size.width, window.height = size.height;
   }
   json report = {{"exemplar", args.exemplar}, {"method", args.method}, {"seed", globals.seed}};
+  if (!args.applyCoords.empty()) {
+    report["method"] = "apply-coords";
+    report["made_tileable"] = false;
+    Image result = applyCoordinates(readImage(args.exemplar), args, report);
+    window.width = result.width, window.height = result.height;
+    return finish(args, globals, window, std::move(result), 0.0, report);
+  }
+  if (args.method == "optimize" && !args.window.empty())
+    throw ParameterError("--window", "optimize solves for a whole image at once (it is not random access); use --size");
   Image exemplar = prepareExemplar(args, report);
 
   auto start = std::chrono::steady_clock::now();
@@ -112,6 +79,8 @@ void runImage(const ImageArgs& args, const GlobalOptions& globals) {
     result = texture.synthesizeWindow(window.x, window.y, window.width, window.height);
   } else if (args.method == "parallel") {
     result = synthesizeParallelWindow(exemplar, args, window, globals, report);
+  } else if (args.method == "optimize") {
+    result = synthesizeOptimized(exemplar, args, window.width, window.height, globals, report);
   } else {
     TileBlendOptions options;
     options.tileSize = args.tileSize;
@@ -120,6 +89,12 @@ void runImage(const ImageArgs& args, const GlobalOptions& globals) {
     result = synthesizeTileBlend(exemplar, options, window.x, window.y, window.width, window.height);
   }
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  finish(args, globals, window, std::move(result), seconds, report);
+}
+
+// Writes the result and reports it.
+void finish(const ImageArgs& args, const GlobalOptions& globals, const Window& window, Image result, double seconds,
+            json& report) {
   writeImage(args.output, result);
 
   report["window"] = {window.x, window.y, window.width, window.height};
@@ -129,7 +104,7 @@ void runImage(const ImageArgs& args, const GlobalOptions& globals) {
   if (globals.json) return printJson(report);
   char line[160];
   std::snprintf(line, sizeof line, "wrote %s (%dx%d, %s, %.3f s)%s", args.output.c_str(), window.width, window.height,
-                args.method.c_str(), seconds,
+                report["method"].get<std::string>().c_str(), seconds,
                 report["made_tileable"].get<bool>() ? "; exemplar made tileable first" : "");
   say(globals, line);
 }
@@ -139,20 +114,25 @@ void runImage(const ImageArgs& args, const GlobalOptions& globals) {
 Command registerImageCommand(CLI::App& app, const GlobalOptions& globals) {
   auto* sub = app.add_subcommand(
       "image",
-      "Synthesize a 2D texture from an exemplar. Every method is random access: --window X,Y,W,H computes any part of "
-      "the infinite texture alone, bit-identical to the same region of a larger output.\n"
+      "Synthesize a 2D texture from an exemplar. tile-deform, tile-blend and parallel are random access: --window "
+      "X,Y,W,H computes any part of the infinite texture alone, bit-identical to the same region of a larger output.\n"
       "  tile-deform: tile the exemplar and deform a grid over it with Perlin noise (Chen et al.); keeps features "
       "crisp, suits irregular and near-stochastic textures (marble, stone, bark).\n"
       "  tile-blend: histogram-preserving tiling and blending (Heitz & Neyret 2018); no visible deformation, keeps "
       "the exemplar's histogram, suits stochastic textures (granite, sand, noise-like surfaces).\n"
       "  parallel: Lefebvre & Hoppe 2005 k-coherence synthesis on the cached exemplar analysis; copies exemplar "
-      "content pixel by pixel, so features stay crisp without visible tiling.");
+      "content pixel by pixel, so features stay crisp without visible tiling.\n"
+      "  optimize: texture optimization (Kwatra et al. 2005) with the discrete k-coherence solver of Han et al.: "
+      "slower, global (no --window), best at keeping larger structures intact; --solver least-squares runs "
+      "Kwatra's original blended solver for comparison (blurrier, slower).\n"
+      "With --apply-coords COORDS.exr, EXEMPLAR is another map of the same material (normal, roughness ...) and the "
+      "stored synthesis (from --coords) is re-applied to it.");
   auto args = std::make_shared<ImageArgs>();
   sub->add_option("EXEMPLAR", args->exemplar, "Exemplar image")->required();
   sub->add_option("-o,--output", args->output, "Output image (.png .jpg .exr ...)")->required();
   sub->add_option("--method", args->method, "Synthesis method")
       ->capture_default_str()
-      ->check(CLI::IsMember({"tile-deform", "tile-blend", "parallel"}));
+      ->check(CLI::IsMember({"tile-deform", "tile-blend", "parallel", "optimize"}));
   sub->add_option("--size", args->size, "Output size WxH or N (the window at the origin)")->capture_default_str();
   sub->add_option("--window", args->window,
                   "X,Y,W,H: the window of the infinite texture to compute (overrides --size)");
@@ -183,11 +163,32 @@ Command registerImageCommand(CLI::App& app, const GlobalOptions& globals) {
   sub->add_option("--passes", args->passes, "parallel: correction passes per level")->capture_default_str();
   sub->add_option("--jitter", args->jitter,
                   "parallel: jitter strength for all levels, or COARSEST,OTHERS (default 0.4 everywhere; raise the "
-                  "coarsest to break "
-                  "large-scale repetition)");
+                  "coarsest to break large-scale repetition). optimize: jitter of the levels after the coarsest "
+                  "(default 0; the optimization removes most of it)");
+  sub->add_option("--solver", args->solver,
+                  "optimize: discrete (k-coherence E- and M-steps, Han et al.) or least-squares (Kwatra et al. 2005)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"discrete", "least-squares"}));
+  sub->add_option("--levels", args->levels,
+                  "parallel, optimize: Gaussian stack levels (0 = as many as the exemplar allows; default: parallel 0, "
+                  "optimize 3 as Han et al.)");
+  sub->add_option("--neighborhood", args->neighborhoods,
+                  "parallel: neighborhood size N per level, coarsest first, the last repeating (default 5, as L&H "
+                  "2005; e.g. 5,7). optimize: sizes run in turn at every level (default 17,9, Han et al. Table 2)");
+  sub->add_option("--iterations", args->iterations,
+                  "optimize: most E+M iterations per level and neighborhood size (stops when no match changes)")
+      ->capture_default_str();
+  sub->add_option("-k,--similar", args->similarCount,
+                  "parallel, optimize: k of the k-coherence similarity sets (default: parallel 2, optimize 4)");
+  sub->add_option("--subpasses", args->subpasses,
+                  "parallel: s, for s^2 subpasses per correction pass (1 = all pixels at once)")
+      ->capture_default_str();
   sub->add_option("--coords", args->coords,
-                  "parallel: also write the synthesized source coordinates (x, y into the exemplar as used, i.e. after "
-                  "--tileable conversion: see --save-tileable) to this .exr");
+                  "parallel, optimize (discrete): also write the synthesized source coordinates (x, y into the "
+                  "exemplar as used, i.e. after --tileable conversion: see --save-tileable) to this .exr");
+  sub->add_option("--apply-coords", args->applyCoords,
+                  "Re-apply a synthesis: look EXEMPLAR (another map of the same material, the size of the original "
+                  "exemplar) up at the coordinates in this .exr (from --coords); no synthesis runs");
   return {sub, [args, &globals] { runImage(*args, globals); }};
 }
 

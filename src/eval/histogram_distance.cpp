@@ -31,8 +31,8 @@ double wasserstein1(std::vector<float> a, std::vector<float> b) {
 double histogramDistance(const Image& a, const Image& b) {
   if (a.empty() || b.empty()) throw ParameterError("histogramDistance", "needs two non-empty images");
   if (a.channels != b.channels)
-    throw ParameterError("histogramDistance", "channel counts differ: " + std::to_string(a.channels) + " and " +
-                                                  std::to_string(b.channels));
+    throw ParameterError("histogramDistance",
+                         "channel counts differ: " + std::to_string(a.channels) + " and " + std::to_string(b.channels));
   auto channel = [](const Image& image, int c) {
     std::vector<float> values(image.pixelCount());
     for (std::size_t p = 0; p < values.size(); ++p) values[p] = image.pixels[p * image.channels + c];

@@ -7,6 +7,7 @@
 #include "texsynth/core/error.h"
 #include "texsynth/eval/histogram_distance.h"
 #include "texsynth/eval/periodicity.h"
+#include "texsynth/eval/sharpness.h"
 
 namespace texsynth {
 namespace eval_detail {
@@ -27,8 +28,8 @@ void validateOptions(const MetricOptions& options) {
   if (options.periodicitySamples < 1)
     throw ParameterError("periodicitySamples", "must be at least 1, got " + std::to_string(options.periodicitySamples));
   if (!(options.duplicateThreshold >= 0) || !std::isfinite(options.duplicateThreshold))
-    throw ParameterError("duplicateThreshold", "must be a finite value >= 0, got " +
-                                                   std::to_string(options.duplicateThreshold));
+    throw ParameterError("duplicateThreshold",
+                         "must be a finite value >= 0, got " + std::to_string(options.duplicateThreshold));
   if (options.slicesPerAxis < 1)
     throw ParameterError("slicesPerAxis", "must be at least 1, got " + std::to_string(options.slicesPerAxis));
 }
@@ -37,8 +38,8 @@ Image toRgb255(const Image& image, const std::string& what, int patchSize) {
   if (image.empty()) throw ParameterError(what, "is empty");
   if (image.width < patchSize || image.height < patchSize)
     throw ParameterError(what, "is " + std::to_string(image.width) + "x" + std::to_string(image.height) +
-                                   ", smaller than the " + std::to_string(patchSize) + "x" +
-                                   std::to_string(patchSize) + " patch");
+                                   ", smaller than the " + std::to_string(patchSize) + "x" + std::to_string(patchSize) +
+                                   " patch");
   Image rgb = image.withChannels(3);
   for (float& value : rgb.pixels) {
     if (!std::isfinite(value)) throw ParameterError(what, "contains non-finite values (NaN or infinity)");
@@ -53,6 +54,8 @@ QualityMetrics evaluateRgb255(const PatchIndex& exemplarIndex, const Image& outp
   metrics.coherence = rootMeanSquare(exemplarIndex.nearest(output));
   metrics.completeness = rootMeanSquare(outputIndex.nearest(exemplarIndex.image()));
   metrics.histogram = histogramDistance(exemplarIndex.image(), output);
+  const double exemplarGradient = meanGradientMagnitude(exemplarIndex.image());
+  metrics.sharpness = exemplarGradient > 0 ? meanGradientMagnitude(output) / exemplarGradient : 0.0;
   metrics.periodicity =
       periodicity(outputIndex, {options.periodicitySamples, options.duplicateThreshold, options.seed});
   return metrics;
@@ -65,8 +68,7 @@ QualityMetrics evaluateImage(const Image& exemplar, const Image& output, const M
   eval_detail::validateOptions(options);
   Image exemplarRgb = eval_detail::toRgb255(exemplar, "exemplar", options.patchSize);
   Image outputRgb = eval_detail::toRgb255(output, "output", options.patchSize);
-  QualityMetrics metrics =
-      eval_detail::evaluateRgb255(PatchIndex(exemplarRgb, options.patchSize), outputRgb, options);
+  QualityMetrics metrics = eval_detail::evaluateRgb255(PatchIndex(exemplarRgb, options.patchSize), outputRgb, options);
   metrics.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return metrics;
 }

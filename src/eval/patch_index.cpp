@@ -67,10 +67,18 @@ PatchIndex::~PatchIndex() = default;
 PatchIndex::PatchIndex(PatchIndex&&) noexcept = default;
 PatchIndex& PatchIndex::operator=(PatchIndex&&) noexcept = default;
 
-int PatchIndex::patchSize() const { return impl_->basis.patchSize; }
-int PatchIndex::columns() const { return impl_->columns; }
-int PatchIndex::rows() const { return impl_->rows; }
-const Image& PatchIndex::image() const { return impl_->image; }
+int PatchIndex::patchSize() const {
+  return impl_->basis.patchSize;
+}
+int PatchIndex::columns() const {
+  return impl_->columns;
+}
+int PatchIndex::rows() const {
+  return impl_->rows;
+}
+const Image& PatchIndex::image() const {
+  return impl_->image;
+}
 
 double PatchIndex::meanSquaredDifference(const Image& a, int ax, int ay, const Image& b, int bx, int by,
                                          int patchSize) {
@@ -107,7 +115,9 @@ std::vector<PatchMatch> PatchIndex::nearest(const Image& queries) const {
     for (int r = 0; r < count; ++r)
       for (int x = 0; x < columns; ++x) {
         const std::size_t at = std::size_t(first + r) * columns + x;
-        int guess = x > 0 ? d.shifted(matches[at - 1].index, 1, 0) : r > 0 ? d.shifted(matches[at - columns].index, 0, 1) : -1;
+        int guess = x > 0   ? d.shifted(matches[at - 1].index, 1, 0)
+                    : r > 0 ? d.shifted(matches[at - columns].index, 0, 1)
+                            : -1;
         PatchKdTree::Best best = d.search(&vectors[(std::size_t(r) * columns + x) * stride], guess);
         const int bx = best.index % d.columns, by = best.index / d.columns;
         matches[at] = {best.index, meanSquaredDifference(queries, x, first + r, d.image, bx, by, size)};
@@ -119,7 +129,8 @@ std::vector<PatchMatch> PatchIndex::nearest(const Image& queries) const {
 std::vector<int> PatchIndex::within(const Image& image, int x, int y, double limit) const {
   const Impl& d = *impl_;
   const int size = patchSize();
-  TS_CHECK(image.channels == d.image.channels && x >= 0 && y >= 0 && x + size <= image.width && y + size <= image.height);
+  TS_CHECK(image.channels == d.image.channels && x >= 0 && y >= 0 && x + size <= image.width &&
+           y + size <= image.height);
   std::vector<float> query(d.basis.stride);
   eval_detail::rotatePatch(image, d.basis, x, y, query.data());
   std::vector<int> candidates;

@@ -15,7 +15,9 @@ namespace {
 constexpr float kPruneSlack = 1e-4f;
 constexpr float kPruneFloor = 1e-3f;
 
-float slackened(float limit) { return limit * (1 + kPruneSlack) + kPruneFloor; }
+float slackened(float limit) {
+  return limit * (1 + kPruneSlack) + kPruneFloor;
+}
 }  // namespace
 
 struct PatchKdTree::Search {
@@ -47,7 +49,8 @@ int PatchKdTree::build(std::vector<int>& order, int begin, int end, const std::v
     for (int slot = 0; slot < kLeafSize; ++slot) {
       // Padding slots repeat the last point; their index -1 keeps them out of every result.
       const int index = order[std::min(begin + slot, end - 1)];
-      if (begin + slot < end) slotIndex_[std::size_t(leaf) * kLeafSize + slot] = index, slotOf_[index] = leaf * kLeafSize + slot;
+      if (begin + slot < end)
+        slotIndex_[std::size_t(leaf) * kLeafSize + slot] = index, slotOf_[index] = leaf * kLeafSize + slot;
       for (int c = 0; c < stride_; ++c) values[c * kLeafSize + slot] = points[std::size_t(index) * stride_ + c];
     }
     return self;

@@ -46,8 +46,8 @@ double periodicity(const PatchIndex& index, const PeriodicityOptions& options) {
   if (options.samples < 1)
     throw ParameterError("periodicitySamples", "must be at least 1, got " + std::to_string(options.samples));
   if (!(options.duplicateThreshold >= 0) || !std::isfinite(options.duplicateThreshold))
-    throw ParameterError("duplicateThreshold", "must be a finite value >= 0, got " +
-                                                   std::to_string(options.duplicateThreshold));
+    throw ParameterError("duplicateThreshold",
+                         "must be a finite value >= 0, got " + std::to_string(options.duplicateThreshold));
   const std::size_t positions = index.size();
   TS_CHECK(positions <= UINT32_MAX);  // uniformBelow draws 32-bit positions
   const bool everyPosition = positions <= std::size_t(options.samples);

@@ -12,7 +12,9 @@ namespace {
 
 const char* const kAxisNames[3] = {"x", "y", "z"};
 
-int extent(const Volume& volume, int axis) { return axis == 0 ? volume.nx : axis == 1 ? volume.ny : volume.nz; }
+int extent(const Volume& volume, int axis) {
+  return axis == 0 ? volume.nx : axis == 1 ? volume.ny : volume.nz;
+}
 
 // The slice normal to `axis` at `index`; image axes (u, v): x -> (y, z), y -> (x, z), z -> (x, y).
 Image volumeSlice(const Volume& volume, int axis, int index) {
@@ -47,7 +49,7 @@ VolumeQuality evaluateVolume(const Image& exemplar, const Volume& volume, const 
   for (int axis = 0; axis < 3; ++axis) {
     const auto axisStart = std::chrono::steady_clock::now();
     const int n = extent(volume, axis);
-    double coherenceSquares = 0, completenessSquares = 0, histogram = 0, periodicity = 0;
+    double coherenceSquares = 0, completenessSquares = 0, histogram = 0, periodicity = 0, sharpness = 0;
     for (int i = 0; i < slices; ++i) {
       const int index = int(std::floor((i + 0.5) * n / slices));
       const std::string what = std::string("volume slice ") + kAxisNames[axis] + "=" + std::to_string(index);
@@ -56,12 +58,14 @@ VolumeQuality evaluateVolume(const Image& exemplar, const Volume& volume, const 
       coherenceSquares += m.coherence * m.coherence;
       completenessSquares += m.completeness * m.completeness;
       histogram += m.histogram;
+      sharpness += m.sharpness;
       periodicity += m.periodicity;
     }
     QualityMetrics& a = quality.axis[axis];
     a.coherence = std::sqrt(coherenceSquares / slices);
     a.completeness = std::sqrt(completenessSquares / slices);
     a.histogram = histogram / slices;
+    a.sharpness = sharpness / slices;
     a.periodicity = periodicity / slices;
     a.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - axisStart).count();
   }
@@ -70,6 +74,7 @@ VolumeQuality evaluateVolume(const Image& exemplar, const Volume& volume, const 
     mean.coherence += a.coherence / 3;
     mean.completeness += a.completeness / 3;
     mean.histogram += a.histogram / 3;
+    mean.sharpness += a.sharpness / 3;
     mean.periodicity += a.periodicity / 3;
   }
   mean.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

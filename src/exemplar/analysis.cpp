@@ -1,5 +1,6 @@
 #include "texsynth/exemplar/analysis.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -18,16 +19,26 @@ std::string levelLabel(int level, int levelCount) {
   return " (level " + std::to_string(level + 1) + "/" + std::to_string(levelCount) + ")";
 }
 
+void requireNeighborhoodSize(const char* name, int n) {
+  if (n < 1 || n % 2 == 0 || n > kMaxNeighborhoodSize)
+    throw ParameterError(
+        name, "must be odd and in 1.." + std::to_string(kMaxNeighborhoodSize) + ", got " + std::to_string(n));
+}
+
 }  // namespace
+
+int neighborhoodSizeAt(const AnalysisOptions& options, int level) {
+  const std::vector<int>& sizes = options.levelNeighborhoodSizes;
+  if (sizes.empty()) return options.neighborhoodSize;
+  return sizes[std::size_t(std::min<int>(level, int(sizes.size()) - 1))];
+}
 
 void validateAnalysisOptions(const Image& exemplar, const AnalysisOptions& options) {
   if (exemplar.empty()) throw ParameterError("exemplar", "image is empty");
   for (float v : exemplar.pixels)
     if (!std::isfinite(v)) throw ParameterError("exemplar", "contains NaN or infinite values");
-  const int n = options.neighborhoodSize;
-  if (n < 1 || n % 2 == 0 || n > kMaxNeighborhoodSize)
-    throw ParameterError("neighborhoodSize", "must be odd and in 1.." + std::to_string(kMaxNeighborhoodSize) +
-                                                 ", got " + std::to_string(n));
+  requireNeighborhoodSize("neighborhoodSize", options.neighborhoodSize);
+  for (int n : options.levelNeighborhoodSizes) requireNeighborhoodSize("levelNeighborhoodSizes", n);
   if (options.pcaDimensions < 1)
     throw ParameterError("pcaDimensions", "must be at least 1, got " + std::to_string(options.pcaDimensions));
   if (options.similarCount < 1)
@@ -81,7 +92,8 @@ ExemplarAnalysis analyzeExemplar(const Image& exemplar, const AnalysisOptions& o
     ExemplarLevel& out = analysis.levels[level];
     out.spacing = stack.spacing(level);
     out.image = std::move(stack.levels[level]);
-    const NeighborhoodShape shape = out.shape(options.neighborhoodSize);
+    out.neighborhoodSize = neighborhoodSizeAt(options, level);
+    const NeighborhoodShape shape = out.shape();
 
     progress.begin("exemplar: PCA" + levelLabel(level, levelCount), 2);
     out.pca = fitNeighborhoodPca(out.image, shape, options.pcaDimensions);

@@ -21,6 +21,7 @@ void hashImage(Hasher& hasher, const Image& image) {
 
 void writeLevel(ByteWriter& out, const ExemplarLevel& level) {
   out.value(std::int32_t(level.spacing));
+  out.value(std::int32_t(level.neighborhoodSize));
   out.value(std::int32_t(level.image.channels));
   out.array(level.image.pixels);
   const PcaBasis& pca = level.pca;
@@ -37,11 +38,13 @@ void writeLevel(ByteWriter& out, const ExemplarLevel& level) {
 
 // Reads one level and checks it against the analysis it belongs to.
 bool readLevel(ByteReader& in, const ExemplarAnalysis& analysis, ExemplarLevel& level) {
-  std::int32_t spacing = 0, channels = 0, inputDimension = 0, outputDimension = 0;
+  std::int32_t spacing = 0, neighborhoodSize = 0, channels = 0, inputDimension = 0, outputDimension = 0;
   PcaBasis& pca = level.pca;
-  if (!in.value(spacing) || !in.value(channels)) return false;
+  if (!in.value(spacing) || !in.value(neighborhoodSize) || !in.value(channels)) return false;
   if (channels != analysis.channels() || spacing < 1) return false;
+  if (neighborhoodSize < 1 || neighborhoodSize > kMaxNeighborhoodSize) return false;
   level.spacing = spacing;
+  level.neighborhoodSize = neighborhoodSize;
   level.image.width = analysis.width;
   level.image.height = analysis.height;
   level.image.channels = channels;
@@ -50,7 +53,7 @@ bool readLevel(ByteReader& in, const ExemplarAnalysis& analysis, ExemplarLevel& 
   if (!in.value(inputDimension) || !in.value(outputDimension) || !in.value(pca.totalVariance) ||
       !in.value(pca.keptEnergy))
     return false;
-  const int n = analysis.neighborhoodSize;
+  const int n = level.neighborhoodSize;
   if (inputDimension != n * n * channels || outputDimension < 1 || outputDimension > inputDimension) return false;
   pca.inputDimension = inputDimension;
   pca.outputDimension = outputDimension;
@@ -114,6 +117,8 @@ std::uint64_t analysisCacheKey(const Image& exemplar, const AnalysisOptions& opt
   hashImage(hasher, exemplar);
   hasher.value(options.levelCount).value(options.neighborhoodSize).value(options.pcaDimensions);
   hasher.value(options.similarCount).value(options.exclusionRadius);
+  hasher.value(options.levelNeighborhoodSizes.size());
+  for (int n : options.levelNeighborhoodSizes) hasher.value(n);
   const SimilarityOptions& search = options.search;
   hasher.value(search.backend).value(search.nanoflannEpsilon);
   hasher.value(search.hnswNeighbors).value(search.hnswEfConstruction).value(search.hnswEfSearch);

@@ -39,6 +39,9 @@ void validate(const ExemplarAnalysis& analysis, const ParallelSynthesisOptions& 
   if (std::abs(std::int64_t(y0)) >= kMaxAbsoluteCoordinate || std::abs(std::int64_t(y0) + h) >= kMaxAbsoluteCoordinate)
     throw ParameterError("y0", "window must stay within +-2^28 pixels, got y0 = " + std::to_string(y0));
   if (options.passes < 0) throw ParameterError("passes", "must be >= 0, got " + std::to_string(options.passes));
+  if (options.subpassGrid < 1 || options.subpassGrid > 4)
+    throw ParameterError(
+        "subpasses", "the subpass grid s (s^2 subpasses) must be in 1..4, got " + std::to_string(options.subpassGrid));
   if (!options.jitter.empty() && int(options.jitter.size()) != analysis.levelCount())
     throw ParameterError("jitter", "needs one value per level (" + std::to_string(analysis.levelCount()) + "), got " +
                                        std::to_string(options.jitter.size()));
@@ -53,24 +56,25 @@ SourceCoordinates synthesizeParallelCoordinates(const ExemplarAnalysis& analysis
                                                 Progress& progress) {
   validate(analysis, options, x0, y0, w, h);
   const int levels = analysis.levelCount();
-  const int margin = correctionMargin(analysis, options.passes);
+  auto margin = [&](int level) { return correctionMargin(analysis, level, options.passes, options.subpassGrid); };
 
   // corrected[l]: the region level l must deliver; the finest delivers the window itself.
   std::vector<Region> corrected(static_cast<std::size_t>(levels));
   corrected[levels - 1] = {x0, y0, w, h};
-  for (int l = levels - 1; l > 0; --l) corrected[l - 1] = corrected[l].grown(margin).parents();
+  for (int l = levels - 1; l > 0; --l) corrected[l - 1] = corrected[l].grown(margin(l)).parents();
 
   progress.begin("parallel synthesis", levels);
   SourceCoordinates coords;
   for (int l = 0; l < levels; ++l) {
     const int spacing = analysis.levels[l].spacing;
-    const Region start = corrected[l].grown(margin);
+    const Region start = corrected[l].grown(margin(l));
     coords = l == 0 ? tilingCoordinates(start.x0, start.y0, start.width, start.height, spacing, analysis.width,
                                         analysis.height)
                     : upsampleCoordinates(coords, start.coordinates(), spacing, analysis.width, analysis.height);
     const float strength = options.jitter.empty() ? options.defaultJitter : options.jitter[l];
     jitterCoordinates(coords, l, spacing, strength, options.seed, analysis.width, analysis.height);
-    for (int pass = 0; pass < options.passes; ++pass) coords = correctCoordinates(analysis, l, coords);
+    for (int pass = 0; pass < options.passes; ++pass)
+      coords = correctCoordinates(analysis, l, coords, options.subpassGrid);
     TS_CHECK(coords.x0 == corrected[l].x0 && coords.width == corrected[l].width);
     TS_CHECK(coords.y0 == corrected[l].y0 && coords.height == corrected[l].height);
     progress.advance(1);

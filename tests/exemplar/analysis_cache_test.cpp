@@ -55,6 +55,7 @@ TEST(AnalysisCache, KeyCoversPixelsAndEveryOption) {
   };
   EXPECT_TRUE(differs([](AnalysisOptions& o) { o.levelCount = 2; }));
   EXPECT_TRUE(differs([](AnalysisOptions& o) { o.neighborhoodSize = 7; }));
+  EXPECT_TRUE(differs([](AnalysisOptions& o) { o.levelNeighborhoodSizes = {3, 5}; }));
   EXPECT_TRUE(differs([](AnalysisOptions& o) { o.pcaDimensions = 8; }));
   EXPECT_TRUE(differs([](AnalysisOptions& o) { o.similarCount = 4; }));
   EXPECT_TRUE(differs([](AnalysisOptions& o) { o.exclusionRadius = 3; }));

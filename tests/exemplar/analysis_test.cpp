@@ -111,6 +111,19 @@ TEST(Analysis, ReportsEveryStageAndHonoursCancel) {
   EXPECT_THROW(analyzeExemplar(exemplar, {}, cancelling), Cancelled);
 }
 
+TEST(Analysis, NeighborhoodSizePerLevelCoarsestFirstLastRepeating) {
+  AnalysisOptions options;
+  options.levelNeighborhoodSizes = {3, 7};
+  ExemplarAnalysis analysis = analyzeExemplar(test::makeTestPattern(32, 32), options);
+  ASSERT_GE(analysis.levelCount(), 3);
+  for (int level = 0; level < analysis.levelCount(); ++level) {
+    const int n = level == 0 ? 3 : 7;
+    EXPECT_EQ(analysis.levels[level].neighborhoodSize, n);
+    EXPECT_EQ(neighborhoodSizeAt(options, level), n);
+    EXPECT_EQ(analysis.levels[level].pca.inputDimension, n * n * 3);
+  }
+}
+
 TEST(Analysis, RejectsBadParameters) {
   Image exemplar = test::makeTestPattern(16, 16);
   auto expectParameterError = [&](const AnalysisOptions& options, const std::string& parameter) {
@@ -124,6 +137,9 @@ TEST(Analysis, RejectsBadParameters) {
   AnalysisOptions even;
   even.neighborhoodSize = 4;
   expectParameterError(even, "neighborhoodSize");
+  AnalysisOptions evenLevel;
+  evenLevel.levelNeighborhoodSizes = {3, 6};
+  expectParameterError(evenLevel, "levelNeighborhoodSizes");
   AnalysisOptions noDims;
   noDims.pcaDimensions = 0;
   expectParameterError(noDims, "pcaDimensions");

@@ -30,6 +30,7 @@ inline void expectIdenticalAnalyses(const ExemplarAnalysis& a, const ExemplarAna
     const ExemplarLevel &x = a.levels[l], &y = b.levels[l];
     SCOPED_TRACE("level " + std::to_string(l));
     EXPECT_EQ(x.spacing, y.spacing);
+    EXPECT_EQ(x.neighborhoodSize, y.neighborhoodSize);
     EXPECT_EQ(x.image.channels, y.image.channels);
     EXPECT_TRUE(bitwiseEqual(x.image.pixels, y.image.pixels));
     EXPECT_EQ(x.pca.inputDimension, y.pca.inputDimension);

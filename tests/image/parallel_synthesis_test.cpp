@@ -43,6 +43,28 @@ TEST(ParallelSynthesis, WindowIsBitIdenticalToTheSameRegionOfALargerOutput) {
   EXPECT_EQ(colors.pixels, lookupColors(analysis.levels.back().image, window).pixels);
 }
 
+TEST(ParallelSynthesis, WindowsAgreeForEverySubpassGridAndPerLevelNeighborhoods) {
+  AnalysisOptions perLevel;
+  perLevel.levelNeighborhoodSizes = {3, 5, 7};
+  static const ExemplarAnalysis mixed = analyzeExemplar(test::makeTestPattern(32, 32), perLevel);
+  for (int s : {1, 2, 3}) {
+    SCOPED_TRACE("s = " + std::to_string(s));
+    ParallelSynthesisOptions options{.seed = 3, .subpassGrid = s};
+    SourceCoordinates large = synthesizeParallelCoordinates(mixed, options, -20, -9, 90, 70);
+    SourceCoordinates window = synthesizeParallelCoordinates(mixed, options, 11, 5, 23, 19);
+    EXPECT_EQ(window.xy, cropCoordinates(large, 11, 5, 23, 19).xy);
+    SourceCoordinates serial;
+    {
+      ThreadLimit limit(1);
+      serial = synthesizeParallelCoordinates(mixed, options, 11, 5, 23, 19);
+    }
+    EXPECT_EQ(serial.xy, window.xy);
+  }
+  // More subpasses let each pixel see corrected neighbours: the result differs from s = 1.
+  EXPECT_NE(synthesizeParallelCoordinates(mixed, {.subpassGrid = 1}, 0, 0, 40, 40).xy,
+            synthesizeParallelCoordinates(mixed, {.subpassGrid = 2}, 0, 0, 40, 40).xy);
+}
+
 TEST(ParallelSynthesis, DoesNotDependOnThreadCountAndDependsOnSeed) {
   const ExemplarAnalysis& analysis = patternAnalysis();
   SourceCoordinates many = synthesizeParallelCoordinates(analysis, {}, 0, 0, 96, 80);
@@ -118,6 +140,7 @@ TEST(ParallelSynthesis, RejectsBadParameters) {
   test::expectParameterError([&] { synthesizeParallel(analysis, {}, 0, 0, 8, -1); }, "height");
   test::expectParameterError([&] { synthesizeParallel(analysis, {}, 1 << 29, 0, 8, 8); }, "x0");
   test::expectParameterError([&] { synthesizeParallel(analysis, {.passes = -1}, 0, 0, 8, 8); }, "passes");
+  test::expectParameterError([&] { synthesizeParallel(analysis, {.subpassGrid = 0}, 0, 0, 8, 8); }, "subpasses");
   test::expectParameterError([&] { synthesizeParallel(analysis, {.jitter = {0.4f}}, 0, 0, 8, 8); }, "jitter");
   test::expectParameterError([&] { synthesizeParallel(analysis, {.defaultJitter = -0.1f}, 0, 0, 8, 8); }, "jitter");
   std::vector<float> jitter(std::size_t(analysis.levelCount()), 0.4f);

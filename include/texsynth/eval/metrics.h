@@ -9,6 +9,8 @@
 //   histogram     mean over R, G, B of the 1D Wasserstein-1 distance of the value distributions.
 //   periodicity   share of sampled output patches that repeat at the single most common offset
 //                 (tiling scores high, good synthesis near 0); see periodicity.h.
+//   sharpness     mean gradient magnitude of the output over the exemplar's (1 = as crisp,
+//                 below 1 blurrier); see sharpness.h.
 //
 // Patches are taken only where they lie fully inside an image, for outputs and exemplars alike:
 // the exemplar is not assumed tileable, so no wrapped patch can invent a seam that is absent
@@ -21,16 +23,16 @@
 namespace texsynth {
 
 struct MetricOptions {
-  int patchSize = 7;               // odd side of the square neighbourhoods (>= 1)
-  int periodicitySamples = 2000;   // output patches sampled for periodicity (>= 1)
-  double duplicateThreshold = 4.0; // mean squared difference per value (0..255 units) under
-                                   // which two patches count as duplicates (>= 0)
-  std::uint64_t seed = 1;          // picks the periodicity sample
-  int slicesPerAxis = 4;           // volumes: slices evaluated per axis (>= 1)
+  int patchSize = 7;                // odd side of the square neighbourhoods (>= 1)
+  int periodicitySamples = 2000;    // output patches sampled for periodicity (>= 1)
+  double duplicateThreshold = 4.0;  // mean squared difference per value (0..255 units) under
+                                    // which two patches count as duplicates (>= 0)
+  std::uint64_t seed = 1;           // picks the periodicity sample
+  int slicesPerAxis = 4;            // volumes: slices evaluated per axis (>= 1)
 };
 
 struct QualityMetrics {
-  double coherence = 0, completeness = 0, histogram = 0, periodicity = 0;
+  double coherence = 0, completeness = 0, histogram = 0, periodicity = 0, sharpness = 0;
   double seconds = 0;  // wall time spent computing these metrics
 };
 

@@ -19,8 +19,8 @@
 namespace texsynth {
 
 struct PatchMatch {
-  int index = -1;           // patch index in the indexed image: y * columns + x (top-left corner)
-  double meanSquared = 0;   // squared distance divided by the patch's value count
+  int index = -1;          // patch index in the indexed image: y * columns + x (top-left corner)
+  double meanSquared = 0;  // squared distance divided by the patch's value count
 };
 
 class PatchIndex {

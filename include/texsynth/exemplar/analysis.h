@@ -19,6 +19,9 @@ struct AnalysisOptions {
   int levelCount = 0;
   // Neighborhood side N (odd). 5 as in L&H 2005; the solid and surface methods pass 7 or 9.
   int neighborhoodSize = 5;
+  // Optional N per level, coarsest first; the last entry also serves every finer level (the
+  // sketch-guided solid paper: {7, 9} = 7 at the coarsest, 9 elsewhere). Empty = N everywhere.
+  std::vector<int> levelNeighborhoodSizes;
   // PCA dimensions D kept per level (at most N*N*channels). ~20 per the sketch-guided
   // solid paper; L&H 2005 keep a similar handful.
   int pcaDimensions = 20;
@@ -38,12 +41,13 @@ struct AnalysisOptions {
 
 struct ExemplarLevel {
   int spacing = 1;                    // h_l = 2^(L-1-l)
+  int neighborhoodSize = 5;           // N of this level
   Image image;                        // stack level; channels = exemplar's (+1 feature)
   PcaBasis pca;                       // of this level's neighborhoods
   std::vector<float> projected;       // pixelCount x pca.outputDimension
   std::vector<std::int32_t> similar;  // pixelCount x similarCount; [0] = the pixel itself
 
-  NeighborhoodShape shape(int neighborhoodSize) const { return {neighborhoodSize, spacing, image.channels}; }
+  NeighborhoodShape shape() const { return {neighborhoodSize, spacing, image.channels}; }
   const float* projectedAt(std::int32_t pixel) const {
     return projected.data() + std::size_t(pixel) * pca.outputDimension;
   }
@@ -54,7 +58,7 @@ struct ExemplarAnalysis {
   int width = 0, height = 0;
   int colorChannels = 0;           // channels of the exemplar image
   bool hasFeatureChannel = false;  // if so, the last channel of every level
-  int neighborhoodSize = 5;
+  int neighborhoodSize = 5;        // AnalysisOptions::neighborhoodSize; levels[l].neighborhoodSize may differ
   int similarCount = 2;
   int exclusionRadius = 2;
   std::vector<ExemplarLevel> levels;  // [0] coarsest ... back() = exemplar resolution, h = 1
@@ -62,12 +66,15 @@ struct ExemplarAnalysis {
   int levelCount() const { return int(levels.size()); }
   int channels() const { return colorChannels + (hasFeatureChannel ? 1 : 0); }
   std::int32_t pixelIndex(int x, int y) const { return std::int32_t(y) * width + x; }
-  NeighborhoodShape shape(int level) const { return levels[level].shape(neighborhoodSize); }
+  NeighborhoodShape shape(int level) const { return levels[level].shape(); }
   // The k similar pixels of `pixel` at `level` (similarCount entries, first = pixel).
   const std::int32_t* similarAt(int level, std::int32_t pixel) const {
     return levels[level].similar.data() + std::size_t(pixel) * similarCount;
   }
 };
+
+// N of `level` (0 = coarsest) under these options.
+int neighborhoodSizeAt(const AnalysisOptions& options, int level);
 
 // Validates options against the exemplar; throws ParameterError naming the bad one
 // (empty image, even or too large N, D < 1, k < 1, bad level count, mask size mismatch ...).

@@ -13,7 +13,7 @@
 namespace texsynth {
 
 // Bump whenever the analysis results or the file layout change.
-inline constexpr std::uint32_t kAnalysisCacheFormatVersion = 1;
+inline constexpr std::uint32_t kAnalysisCacheFormatVersion = 2;
 
 // Digest of (format version, exemplar size and pixels, every field of `options`).
 std::uint64_t analysisCacheKey(const Image& exemplar, const AnalysisOptions& options);

@@ -16,8 +16,8 @@
 namespace texsynth {
 
 struct GaussianizationOptions {
-  int lutSize = 1024;           // T⁻¹ entries per channel (>= 2)
-  float gaussianRange = 4.0f;   // T⁻¹ covers Gaussian values in [-range, range] (finite, > 0)
+  int lutSize = 1024;          // T⁻¹ entries per channel (>= 2)
+  float gaussianRange = 4.0f;  // T⁻¹ covers Gaussian values in [-range, range] (finite, > 0)
 };
 
 // T⁻¹: Gaussian value -> exemplar value, per channel.
@@ -54,8 +54,8 @@ class InverseLut {
 
 // An exemplar in Gaussian space plus the table that maps back to its colors.
 struct GaussianizedExemplar {
-  Image gaussian;   // T(exemplar): same size and channels, each channel ~ N(0, 1)
-  InverseLut lut;   // T⁻¹
+  Image gaussian;  // T(exemplar): same size and channels, each channel ~ N(0, 1)
+  InverseLut lut;  // T⁻¹
 
   // One point: Gaussian values (one per channel) -> exemplar-histogram color.
   void toColor(const float* g, float* color) const { lut.lookup(g, color); }

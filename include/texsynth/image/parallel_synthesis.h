@@ -26,6 +26,9 @@ struct ParallelSynthesisOptions {
   // Correction passes per level; L&H 2005 use 2. 0 gives the uncorrected, upsampled and
   // jittered coordinates (useful as a baseline).
   int passes = 2;
+  // s: each pass corrects the s x s pixel classes in turn (s^2 subpasses), so a pixel sees
+  // its already corrected neighbours. L&H 2005: s = 2 (4 subpasses); 1 = all pixels at once.
+  int subpassGrid = 2;
   // Jitter strength r_l per level, coarsest first; empty = `defaultJitter` at every level.
   // The displacement is floor(h_l * r_l * xi + 1/2) with xi uniform in [-1, 1]^2, so r_l < 0.5
   // has no effect at the finest level (h = 1). L&H 2005 expose r_l as user sliders; 0.4 at
@@ -59,8 +62,8 @@ struct SourceCoordinates {
 // jitter list of the wrong size or with negative / non-finite entries ("jitter").
 // Progress: one stage, one unit per level.
 SourceCoordinates synthesizeParallelCoordinates(const ExemplarAnalysis& analysis,
-                                                const ParallelSynthesisOptions& options, int x0, int y0, int w,
-                                                int h, Progress& progress = noProgress());
+                                                const ParallelSynthesisOptions& options, int x0, int y0, int w, int h,
+                                                Progress& progress = noProgress());
 
 // The same, returning colors (the exemplar's channels, without the feature channel).
 Image synthesizeParallel(const ExemplarAnalysis& analysis, const ParallelSynthesisOptions& options, int x0, int y0,
@@ -72,9 +75,9 @@ Image lookupColors(const Image& image, const SourceCoordinates& coords, int chan
 
 // ---- Building blocks (shared with the 3D / surface synthesizers) ----
 
-// Margin, in pixels of one level, by which correction shrinks the valid region: every
-// subpass reads neighborhoods of radius max(N/2, 1), and a pass has 4 subpasses.
-int correctionMargin(const ExemplarAnalysis& analysis, int passes);
+// Margin, in pixels of `level`, by which `passes` corrections shrink the valid region: every
+// subpass reads neighborhoods of radius max(N_l/2, 1), and a pass has s^2 subpasses.
+int correctionMargin(const ExemplarAnalysis& analysis, int level, int passes, int subpassGrid = 2);
 
 // The finer level's coordinates over `region` (x0, y0, width, height; its fields only, xy
 // ignored) from the coarser level's `parent`, which must cover floor(region / 2):
@@ -96,13 +99,14 @@ SourceCoordinates tilingCoordinates(int x0, int y0, int width, int height, int s
 void jitterCoordinates(SourceCoordinates& coords, int level, int spacing, float strength, std::uint64_t seed,
                        int exemplarWidth, int exemplarHeight);
 
-// One correction pass at `level`: 4 subpasses, pixels with (x mod 2, y mod 2) = (0,0), (1,1),
-// (1,0), (0,1) in turn; each such pixel takes, among the candidates
-// similar_k(S[p + d] - h_l d) for d in 3x3 and every k, the one whose exemplar neighborhood is
-// nearest in the level's PCA space to the neighborhood of colors gathered at the current
-// coordinates (ties: first candidate in d-major, k-minor order, d = (0,0) first). Returns the
-// region shrunk by correctionMargin(analysis, 1) on every side (the part still exact).
-SourceCoordinates correctCoordinates(const ExemplarAnalysis& analysis, int level, const SourceCoordinates& coords);
+// One correction pass at `level`: s^2 subpasses (s = subpassGrid), one per pixel class
+// (x mod s, y mod s): for s = 2 (0,0), (1,1), (1,0), (0,1) in turn, else row by row; each such pixel takes, among the
+// candidates similar_k(S[p + d] - h_l d) for d in 3x3 and every k, the one whose exemplar neighborhood is nearest in
+// the level's PCA space to the neighborhood of colors gathered at the current coordinates (ties: first candidate in
+// d-major, k-minor order, d = (0,0) first). Returns the region shrunk by correctionMargin(analysis, level, 1, s) on
+// every side (the part still exact).
+SourceCoordinates correctCoordinates(const ExemplarAnalysis& analysis, int level, const SourceCoordinates& coords,
+                                     int subpassGrid = 2);
 
 // Mean over the window's pixels whose neighborhood lies inside it of the squared PCA-space
 // distance between the gathered neighborhood and the exemplar neighborhood at S[p]: how far

@@ -1,0 +1,170 @@
+// The pixel-based methods of `texsynth image`: they synthesize source coordinates into the
+// exemplar (written with --coords, re-applied to other maps with --apply-coords).
+#include <cmath>
+#include <map>
+#include <sstream>
+
+#include "image_args.h"
+#include "texsynth/exemplar/analysis_cache.h"
+#include "texsynth/image/parallel_synthesis.h"
+#include "texsynth/image/texture_optimization.h"
+#include "texsynth/io/image_io.h"
+
+namespace texsynth::cli {
+
+using nlohmann::json;
+
+namespace {
+
+// Source coordinates as a two-channel float image (x, y into the exemplar), for --coords.
+Image coordinateImage(const SourceCoordinates& coords) {
+  Image image(coords.width, coords.height, 2);
+  for (std::size_t i = 0; i < coords.xy.size(); ++i) image.pixels[i] = float(coords.xy[i]);
+  return image;
+}
+
+// "17,9": odd neighborhood sizes.
+std::vector<int> parseNeighborhoods(const std::string& text) {
+  std::vector<int> sizes;
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, ',')) {
+    std::size_t used = 0;
+    int value = 0;
+    try {
+      value = std::stoi(item, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != item.size() || value < 3 || value % 2 == 0 || value > kMaxNeighborhoodSize)
+      throw ParameterError("--neighborhood", "expected odd sizes in 3.." + std::to_string(kMaxNeighborhoodSize) +
+                                                 " separated by commas (e.g. 17,9), got '" + text + "'");
+    sizes.push_back(value);
+  }
+  if (sizes.empty()) throw ParameterError("--neighborhood", "expected at least one size, got '" + text + "'");
+  return sizes;
+}
+
+// The command-line flag behind a library parameter name.
+std::string flagFor(const std::string& parameter) {
+  static const std::map<std::string, std::string> flags = {{"levelCount", "--levels"},
+                                                           {"levels", "--levels"},
+                                                           {"similarCount", "-k"},
+                                                           {"iterations", "--iterations"},
+                                                           {"neighborhood", "--neighborhood"},
+                                                           {"levelNeighborhoodSizes", "--neighborhood"},
+                                                           {"neighborhoodSize", "--neighborhood"},
+                                                           {"subpasses", "--subpasses"},
+                                                           {"passes", "--passes"},
+                                                           {"jitter", "--jitter"}};
+  auto found = flags.find(parameter);
+  return found == flags.end() ? parameter : found->second;
+}
+
+// Runs `work`, renaming the library's parameter names in errors to the flags users typed.
+template <class Work>
+auto withFlagNames(Work&& work) {
+  try {
+    return work();
+  } catch (const ParameterError& e) {
+    throw ParameterError(flagFor(e.parameter()), e.problem());
+  }
+}
+
+}  // namespace
+
+Image synthesizeParallelWindow(const Image& exemplar, const ImageArgs& args, const Window& window,
+                               const GlobalOptions& globals, json& report) {
+  const std::int64_t limit = std::int64_t(1) << 28;
+  if (window.x < -limit || window.x > limit || window.y < -limit || window.y > limit)
+    throw ParameterError("--window", "parallel synthesis needs X and Y within +-2^28");
+  auto progress = makeProgress(globals);
+  AnalysisOptions analysisOptions;
+  if (args.levels >= 0) analysisOptions.levelCount = args.levels;
+  if (args.similarCount >= 0) analysisOptions.similarCount = args.similarCount;
+  if (!args.neighborhoods.empty()) analysisOptions.levelNeighborhoodSizes = parseNeighborhoods(args.neighborhoods);
+  ExemplarAnalysis analysis = withFlagNames(
+      [&] { return analyzeExemplarCached(exemplar, analysisOptions, defaultCacheDirectory(), *progress); });
+  ParallelSynthesisOptions options;
+  options.seed = globals.seed;
+  options.passes = args.passes;
+  options.subpassGrid = args.subpasses;
+  if (!args.jitter.empty()) {
+    auto [coarse, rest] = parseFloatPair(args.jitter, "--jitter");
+    options.jitter.assign(analysis.levelCount(), rest);
+    options.jitter[0] = coarse;
+  }
+  SourceCoordinates coords = withFlagNames([&] {
+    return synthesizeParallelCoordinates(analysis, options, int(window.x), int(window.y), window.width, window.height,
+                                         *progress);
+  });
+  if (!args.coords.empty()) writeImage(args.coords, coordinateImage(coords));
+  report["levels"] = analysis.levelCount();
+  return lookupColors(exemplar, coords);
+}
+
+Image synthesizeOptimized(const Image& exemplar, const ImageArgs& args, int width, int height,
+                          const GlobalOptions& globals, json& report) {
+  TextureOptimizationOptions options;
+  options.seed = globals.seed;
+  options.solver = parseOptimizationSolver(args.solver);
+  if (args.levels >= 0) options.levels = args.levels;
+  if (!args.neighborhoods.empty()) options.neighborhoodSizes = parseNeighborhoods(args.neighborhoods);
+  options.maxIterations = args.iterations;
+  if (!args.jitter.empty()) options.jitter = parseFloatPair(args.jitter, "--jitter").second;
+  if (args.similarCount >= 0) options.similarCount = args.similarCount;
+  if (options.solver == OptimizationSolver::LeastSquares && !args.coords.empty())
+    throw ParameterError("--coords",
+                         "the least-squares solver blends colors, so it has no source coordinates; use "
+                         "--solver discrete");
+  auto progress = makeProgress(globals);
+  std::vector<ExemplarAnalysis> analyses;
+  withFlagNames([&] {
+    for (const AnalysisOptions& analysisOptions : optimizationAnalysisOptions(options))
+      analyses.push_back(analyzeExemplarCached(exemplar, analysisOptions, defaultCacheDirectory(), *progress));
+  });
+  TextureOptimizationResult result =
+      withFlagNames([&] { return optimizeTexture(analyses, options, width, height, *progress); });
+  if (!args.coords.empty()) writeImage(args.coords, coordinateImage(result.coords));
+
+  json iterations = json::array();
+  for (const OptimizationIteration& step : result.history)
+    iterations.push_back({{"level", step.level},
+                          {"neighborhood", step.neighborhoodSize},
+                          {"iteration", step.iteration},
+                          {"energy", step.energy},
+                          {"changed_matches", step.changedMatches},
+                          {"neighborhoods", step.neighborhoods},
+                          {"seconds", step.seconds}});
+  report["solver"] = args.solver;
+  report["levels"] = options.levels;
+  report["iterations"] = iterations;
+  if (!result.history.empty()) report["final_energy"] = result.history.back().energy;
+  return result.colors;
+}
+
+Image applyCoordinates(const Image& map, const ImageArgs& args, json& report) {
+  const Image coords = readImage(args.applyCoords);
+  if (coords.channels < 2)
+    throw InputError(args.applyCoords, "holds " + std::to_string(coords.channels) +
+                                           " channel(s); source coordinates need two (x, y), as --coords writes");
+  SourceCoordinates source(0, 0, coords.width, coords.height);
+  for (int y = 0; y < coords.height; ++y)
+    for (int x = 0; x < coords.width; ++x) {
+      const float* c = coords.pixel(x, y);
+      for (int axis = 0; axis < 2; ++axis) {
+        const int limit = axis == 0 ? map.width : map.height;
+        if (!std::isfinite(c[axis]) || c[axis] < 0 || c[axis] >= float(limit) || c[axis] != std::floor(c[axis]))
+          throw InputError(args.applyCoords, "pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") holds " +
+                                                 (axis == 0 ? "x" : "y") + " = " + std::to_string(c[axis]) +
+                                                 ", not a pixel of the " + std::to_string(map.width) + "x" +
+                                                 std::to_string(map.height) + " map '" + args.exemplar +
+                                                 "' (coordinates must come from an exemplar of the same size)");
+        source.at(x, y)[axis] = std::int32_t(c[axis]);
+      }
+    }
+  report["coords"] = args.applyCoords;
+  return lookupColors(map, source);
+}
+
+}  // namespace texsynth::cli

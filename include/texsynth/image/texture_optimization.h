@@ -1,0 +1,105 @@
+#pragma once
+// Texture optimization (Kwatra et al. 2005) with the discrete k-coherence solver of Han et al.
+// ("Fast example-based surface texture synthesis via discrete optimization"), on image grids.
+//
+// The output minimizes E(x) = sum_{p in X} |x_p - z_p|^2 over a sparse set X of output
+// neighborhoods (centres `stride` = N/4 apart, as Kwatra), z_p the exemplar neighborhood that
+// matches x_p. EM-like iterations alternate
+//   E-step: the output given the matches. Discrete (Han): each pixel picks, from its
+//           k-coherence candidate set, the exemplar pixel that lowers the energy most, so
+//           the output stays a map of SOURCE COORDINATES and stays crisp. Least squares
+//           (Kwatra): each pixel becomes the robust (IRLS, exponent 0.8) weighted mean of the
+//           colors the overlapping matches vote for, which blurs.
+//   M-step: the matches given the output. Discrete: k-coherence search among the candidates
+//           the output's own coordinates propose, ranked in PCA space. Least squares: KD-tree
+//           search in PCA space (the coordinates k-coherence needs are lost to blending).
+// until no match changes. Multiresolution over the exemplar's Gaussian stack (3 levels as in
+// Han et al. Table 2), each level run with neighborhoods 17^2 then 9^2.
+//
+// The output domain is a torus (no borders: every pixel sits in full neighborhoods), so an
+// output whose sides are multiples of 4 (the largest active-set stride) tiles seamlessly. It is a global
+// optimization: unlike the other 2D methods it is not random access. Deterministic for any
+// thread count.
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "texsynth/core/image.h"
+#include "texsynth/core/progress.h"
+#include "texsynth/exemplar/analysis.h"
+#include "texsynth/image/parallel_synthesis.h"
+
+namespace texsynth {
+
+enum class OptimizationSolver {
+  Discrete,      // Han et al.: k-coherence E- and M-steps; keeps source coordinates
+  LeastSquares,  // Kwatra et al. 2005: blended E-step, KD-tree M-step
+};
+
+// "discrete", "least-squares"; parseOptimizationSolver throws ParameterError("solver") otherwise.
+std::string optimizationSolverName(OptimizationSolver solver);
+OptimizationSolver parseOptimizationSolver(const std::string& name);
+
+enum class OptimizationStart {
+  RandomPatches,  // random coherent blocks of the exemplar (default)
+  RandomPixels,   // every pixel random (Han et al. 2.3; washes structured exemplars out)
+};
+
+struct TextureOptimizationOptions {
+  std::uint64_t seed = 1;  // of the random initialization at the coarsest level
+  OptimizationSolver solver = OptimizationSolver::Discrete;
+  // Resolution levels (stack levels with spacing 2^(levels-1) ... 1); Han et al. use 3.
+  // (With many more, the toroidal exemplar lets the coarse levels settle on a perfect copy of
+  // it, energy 0, which the finer levels keep: a tiling.)
+  int levels = 3;
+  // Neighborhood sizes run in turn at every level (Han et al. Table 2: 17^2 then 9^2).
+  std::vector<int> neighborhoodSizes = {17, 9};
+  // Most E+M iterations per neighborhood size; stops earlier when no match changes
+  // (Table 2: 1-3 per size).
+  int maxIterations = 3;
+  // How the coarsest level starts, and the jitter of the finer levels after upsampling
+  // (strength as in parallel synthesis; 0 = none: the optimization itself removes it).
+  OptimizationStart start = OptimizationStart::RandomPatches;
+  int startPatchSize = 4;  // output pixels of the coarsest level per random patch (8: periodicity up ~1.5x)
+  float jitter = 0.0f;
+  // k of the k-coherence candidate sets (similarity set size, the pixel itself included).
+  int similarCount = 4;
+  // PCA dimensions of the least-squares solver's KD-tree search.
+  int pcaDimensions = 20;
+  // Robust exponent r of Kwatra's least-squares E-step (|x_p - z_p|^r, solved by IRLS).
+  float robustExponent = 0.8f;
+};
+
+// One M-step's outcome: the energy of the current output against the new matches.
+struct OptimizationIteration {
+  int level = 0;             // 0 = coarsest
+  int neighborhoodSize = 0;  // N of this step
+  int iteration = 0;         // 0 = the matches of the output as it came in (no E-step yet)
+  double energy = 0;         // sum_p |x_p - z_p|^2 / (|X| * N^2): mean squared error per pixel
+  std::int64_t changedMatches = 0;
+  std::int64_t neighborhoods = 0;  // |X|
+  double seconds = 0;              // wall time of this E+M step
+};
+
+struct TextureOptimizationResult {
+  Image colors;  // width x height, the exemplar's color channels
+  // The source coordinates of every output pixel (discrete solver only; empty otherwise).
+  SourceCoordinates coords;
+  std::vector<OptimizationIteration> history;
+};
+
+// The exemplar analyses the solver needs, one per neighborhood size in order (its PCA), all
+// with levelCount = options.levels; the discrete solver also reads the last one's similarity
+// sets (k = similarCount; the others have k = 1, no search).
+std::vector<AnalysisOptions> optimizationAnalysisOptions(const TextureOptimizationOptions& options);
+
+// Synthesizes a width x height texture. `analyses` must be what optimizationAnalysisOptions
+// asked for, computed on one exemplar. Throws ParameterError for bad options ("levels",
+// "neighborhood", "iterations", "similarCount", "robustExponent", "analyses") or size
+// ("width", "height"). Progress: one stage per level.
+TextureOptimizationResult optimizeTexture(std::span<const ExemplarAnalysis> analyses,
+                                          const TextureOptimizationOptions& options, int width, int height,
+                                          Progress& progress = noProgress());
+
+}  // namespace texsynth

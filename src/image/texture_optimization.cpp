@@ -1,0 +1,253 @@
+// Texture optimization driver: coarse-to-fine over the exemplar's stack levels, at each level
+// the neighborhood sizes in turn, at each size E+M iterations until the matches settle.
+#include "texsynth/image/texture_optimization.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <optional>
+
+#include "optimization_steps.h"
+#include "texsynth/core/parallel.h"
+#include "texsynth/core/random.h"
+
+namespace texsynth {
+namespace {
+
+using detail::Matches;
+using detail::OptimizationGrid;
+using Clock = std::chrono::steady_clock;
+
+bool isLeastSquares(const TextureOptimizationOptions& options) {
+  return options.solver == OptimizationSolver::LeastSquares;
+}
+
+void validate(const TextureOptimizationOptions& options) {
+  if (options.levels < 0 || options.levels > 12)
+    throw ParameterError(
+        "levels", "must be in 0..12 (0 = as many as the exemplar allows), got " + std::to_string(options.levels));
+  if (options.neighborhoodSizes.empty()) throw ParameterError("neighborhood", "needs at least one size");
+  for (int n : options.neighborhoodSizes)
+    if (n < 3 || n % 2 == 0 || n > kMaxNeighborhoodSize)
+      throw ParameterError("neighborhood", "sizes must be odd and in 3.." + std::to_string(kMaxNeighborhoodSize) +
+                                               ", got " + std::to_string(n));
+  if (options.maxIterations < 1)
+    throw ParameterError("iterations", "must be >= 1, got " + std::to_string(options.maxIterations));
+  if (options.similarCount < 1)
+    throw ParameterError("similarCount", "must be >= 1, got " + std::to_string(options.similarCount));
+  if (!(options.robustExponent > 0.0f && options.robustExponent <= 2.0f))
+    throw ParameterError("robustExponent", "must be in (0, 2], got " + std::to_string(options.robustExponent));
+}
+
+void validateAnalyses(std::span<const ExemplarAnalysis> analyses, const TextureOptimizationOptions& options) {
+  const std::vector<AnalysisOptions> wanted = optimizationAnalysisOptions(options);
+  if (analyses.size() != wanted.size())
+    throw ParameterError("analyses", "expected " + std::to_string(wanted.size()) +
+                                         " analyses (see "
+                                         "optimizationAnalysisOptions), got " +
+                                         std::to_string(analyses.size()));
+  for (std::size_t i = 0; i < wanted.size(); ++i) {
+    const ExemplarAnalysis& a = analyses[i];
+    if ((options.levels > 0 && a.levelCount() != options.levels) || a.levelCount() != analyses[0].levelCount() ||
+        a.neighborhoodSize != wanted[i].neighborhoodSize || a.similarCount < wanted[i].similarCount ||
+        a.width != analyses[0].width || a.height != analyses[0].height)
+      throw ParameterError("analyses", "analysis " + std::to_string(i) +
+                                           " does not match optimizationAnalysisOptions (levels, N, k, exemplar)");
+  }
+}
+
+int roundUp(int value, int unit) {
+  return (value + unit - 1) / unit * unit;
+}
+
+// The coarsest level's start. Pixels: every pixel a random exemplar pixel (Han et al. 2.3).
+// Patches: square blocks of `block` pixels, each a coherent piece of the exemplar at a random
+// place (a real arrangement of exemplar structure to optimize, where random pixels make the
+// first matches pick the flattest exemplar regions and the E-step wash the output out).
+SourceCoordinates startCoordinates(const TextureOptimizationOptions& options, int width, int height, int spacing,
+                                   int exemplarWidth, int exemplarHeight) {
+  const bool patches = options.start == OptimizationStart::RandomPatches;
+  const int block = std::max(1, options.startPatchSize);
+  SourceCoordinates coords(0, 0, width, height);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const int bx = patches ? x / block : x, by = patches ? y / block : y;
+      const std::uint64_t key = hashKey(options.seed, latticeId(bx, by), 0x0971);
+      std::int64_t sx = uniformBelow(key, std::uint32_t(exemplarWidth));
+      std::int64_t sy = uniformBelow(mix64(key), std::uint32_t(exemplarHeight));
+      if (patches) sx += std::int64_t(x - bx * block) * spacing, sy += std::int64_t(y - by * block) * spacing;
+      coords.at(x, y)[0] = wrapIndex(sx, exemplarWidth);
+      coords.at(x, y)[1] = wrapIndex(sy, exemplarHeight);
+    }
+  return coords;
+}
+
+// Bilinear resampling on the torus to width x height: the least-squares output's start at a
+// finer level.
+Image upsampleColors(const Image& coarse, int width, int height) {
+  Image fine(width, height, coarse.channels);
+  const float sx = float(coarse.width) / float(width), sy = float(coarse.height) / float(height);
+  parallelForChunks(0, fine.height, 8, [&](std::int64_t begin, std::int64_t end) {
+    for (int y = int(begin); y < int(end); ++y)
+      for (int x = 0; x < fine.width; ++x) {
+        const float fx = (x + 0.5f) * sx - 0.5f, fy = (y + 0.5f) * sy - 0.5f;
+        const int x0 = int(std::floor(fx)), y0 = int(std::floor(fy));
+        const float tx = fx - x0, ty = fy - y0;
+        const float* c00 = coarse.pixel(wrapIndex(x0, coarse.width), wrapIndex(y0, coarse.height));
+        const float* c10 = coarse.pixel(wrapIndex(x0 + 1, coarse.width), wrapIndex(y0, coarse.height));
+        const float* c01 = coarse.pixel(wrapIndex(x0, coarse.width), wrapIndex(y0 + 1, coarse.height));
+        const float* c11 = coarse.pixel(wrapIndex(x0 + 1, coarse.width), wrapIndex(y0 + 1, coarse.height));
+        float* out = fine.pixel(x, y);
+        for (int c = 0; c < coarse.channels; ++c)
+          out[c] = (1 - ty) * ((1 - tx) * c00[c] + tx * c10[c]) + ty * ((1 - tx) * c01[c] + tx * c11[c]);
+      }
+  });
+  return fine;
+}
+
+// The state one level carries between neighborhood sizes and iterations.
+struct LevelState {
+  SourceCoordinates coords;  // discrete
+  Image colors;              // least squares
+};
+
+// E+M iterations at one level and neighborhood size, until no match changes.
+void optimizeScale(std::span<const ExemplarAnalysis> analyses, const TextureOptimizationOptions& options, int level,
+                   std::size_t scale, LevelState& state, std::vector<OptimizationIteration>& history,
+                   Progress& progress) {
+  const bool leastSquares = isLeastSquares(options);
+  const ExemplarAnalysis& analysis = analyses[scale];
+  const int width = leastSquares ? state.colors.width : state.coords.width;
+  const int height = leastSquares ? state.colors.height : state.coords.height;
+  const OptimizationGrid grid(analysis, level, width, height, options.neighborhoodSizes[scale],
+                              leastSquares ? detail::PixelNorm::Squared : detail::PixelNorm::Euclidean);
+  std::optional<ProjectedNeighborhoodIndex> index;
+  if (leastSquares) {  // exact search, a fair baseline; over the allowed match centres only
+    std::vector<std::int32_t> allowed;
+    for (std::int32_t pixel = 0; pixel < analysis.width * analysis.height; ++pixel)
+      if (grid.isAllowedCentre(pixel)) allowed.push_back(pixel);
+    index.emplace(analysis.levels[level].projectedVectors(), std::move(allowed));
+  }
+
+  Matches matches(grid.activeCount());
+  auto match = [&] {
+    return leastSquares
+               ? detail::matchLeastSquares(grid, analysis.levels[level].pca, *index, state.colors, matches)
+               : detail::matchDiscrete(grid, analysis.levels[level], analyses.back(), level, state.coords, matches);
+  };
+  auto record = [&](int iteration, std::int64_t changed, Clock::time_point start) {
+    history.push_back({level, grid.size, iteration, detail::normalizedEnergy(grid, matches), changed,
+                       grid.activeCount(), std::chrono::duration<double>(Clock::now() - start).count()});
+  };
+  Clock::time_point start = Clock::now();
+  record(0, match(), start);
+  progress.advance(1);
+  int iteration = 1;
+  for (; iteration <= options.maxIterations; ++iteration) {
+    start = Clock::now();
+    if (leastSquares)
+      state.colors = detail::updateLeastSquares(grid, matches, options.robustExponent);
+    else
+      state.coords = detail::updateDiscrete(grid, analyses.back(), level, state.coords, matches);
+    const std::int64_t changed = match();
+    record(iteration, changed, start);
+    progress.advance(1);
+    if (changed == 0) break;
+  }
+  if (iteration < options.maxIterations) progress.advance(options.maxIterations - iteration);
+}
+
+SourceCoordinates cropCoordinates(const SourceCoordinates& coords, int width, int height) {
+  SourceCoordinates out(0, 0, width, height);
+  for (int y = 0; y < height; ++y) std::copy_n(coords.at(0, y), 2 * std::size_t(width), out.at(0, y));
+  return out;
+}
+
+}  // namespace
+
+std::string optimizationSolverName(OptimizationSolver solver) {
+  return solver == OptimizationSolver::Discrete ? "discrete" : "least-squares";
+}
+
+OptimizationSolver parseOptimizationSolver(const std::string& name) {
+  if (name == "discrete") return OptimizationSolver::Discrete;
+  if (name == "least-squares") return OptimizationSolver::LeastSquares;
+  throw ParameterError("solver", "must be 'discrete' or 'least-squares', got '" + name + "'");
+}
+
+std::vector<AnalysisOptions> optimizationAnalysisOptions(const TextureOptimizationOptions& options) {
+  validate(options);
+  std::vector<AnalysisOptions> all;
+  for (std::size_t i = 0; i < options.neighborhoodSizes.size(); ++i) {
+    AnalysisOptions analysis;
+    analysis.levelCount = options.levels;
+    analysis.pcaDimensions = options.pcaDimensions;
+    analysis.neighborhoodSize = options.neighborhoodSizes[i];
+    // The discrete solver's candidate sets come from the last size's similarity sets; the
+    // least-squares M-step searches a KD-tree instead.
+    const bool last = i + 1 == options.neighborhoodSizes.size();
+    analysis.similarCount = last && !isLeastSquares(options) ? options.similarCount : 1;
+    all.push_back(analysis);
+  }
+  return all;
+}
+
+TextureOptimizationResult optimizeTexture(std::span<const ExemplarAnalysis> analyses,
+                                          const TextureOptimizationOptions& options, int width, int height,
+                                          Progress& progress) {
+  validate(options);
+  if (width <= 0) throw ParameterError("width", "must be > 0, got " + std::to_string(width));
+  if (height <= 0) throw ParameterError("height", "must be > 0, got " + std::to_string(height));
+  validateAnalyses(analyses, options);
+  const ExemplarAnalysis& base = analyses.back();
+  const int levels = base.levelCount();
+
+  // Each level's torus holds whole active-set strides; a level is half the next one's size,
+  // rounded up to a stride. The finest is the output itself when its sides are multiples of
+  // the largest stride (then it tiles seamlessly).
+  int maxStride = 1;
+  for (int n : options.neighborhoodSizes) maxStride = std::max(maxStride, OptimizationGrid::activeStride(n));
+  const auto levelSlots = static_cast<std::size_t>(levels);
+  std::vector<int> widths(levelSlots), heights(levelSlots);
+  widths.back() = roundUp(width, maxStride), heights.back() = roundUp(height, maxStride);
+  for (int level = levels - 2; level >= 0; --level) {
+    widths[level] = roundUp((widths[level + 1] + 1) / 2, maxStride);
+    heights[level] = roundUp((heights[level + 1] + 1) / 2, maxStride);
+  }
+
+  TextureOptimizationResult result;
+  LevelState state;
+  const int steps = int(options.neighborhoodSizes.size()) * (options.maxIterations + 1);
+  for (int level = 0; level < levels; ++level) {
+    const int w = widths[level], h = heights[level];
+    progress.begin("optimize level " + std::to_string(level + 1) + "/" + std::to_string(levels) + " (" +
+                       std::to_string(w) + "x" + std::to_string(h) + ")",
+                   steps);
+    const OptimizationGrid start(base, level, w, h, options.neighborhoodSizes[0]);
+    if (level == 0)
+      state.coords = startCoordinates(options, w, h, start.spacing(), base.width, base.height);
+    else if (!isLeastSquares(options))
+      state.coords =
+          upsampleCoordinates(state.coords, SourceCoordinates(0, 0, w, h), start.spacing(), base.width, base.height);
+    if (level > 0 && !isLeastSquares(options))
+      jitterCoordinates(state.coords, level, start.spacing(), options.jitter, options.seed, base.width, base.height);
+    if (isLeastSquares(options))
+      state.colors = level == 0 ? detail::colorsAt(start, state.coords) : upsampleColors(state.colors, w, h);
+    for (std::size_t scale = 0; scale < options.neighborhoodSizes.size(); ++scale)
+      optimizeScale(analyses, options, level, scale, state, result.history, progress);
+    progress.end();
+  }
+
+  const OptimizationGrid finest(base, levels - 1, widths.back(), heights.back(), options.neighborhoodSizes.back());
+  Image colors;
+  if (isLeastSquares(options)) {
+    colors = std::move(state.colors);
+  } else {
+    result.coords = cropCoordinates(state.coords, width, height);
+    colors = detail::colorsAt(finest, result.coords);
+  }
+  result.colors = colors.crop(0, 0, width, height).withChannels(base.colorChannels);
+  return result;
+}
+
+}  // namespace texsynth
