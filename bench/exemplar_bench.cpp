@@ -14,6 +14,7 @@
 #include "texsynth/core/data_paths.h"
 #include "texsynth/core/random.h"
 #include "texsynth/exemplar/analysis.h"
+#include "texsynth/exemplar/candidate_triples.h"
 #include "texsynth/exemplar/gaussian_stack.h"
 #include "texsynth/io/image_io.h"
 
@@ -209,6 +210,24 @@ BENCHMARK(BM_AnalyzeExemplar)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1)
     ->MeasureProcessCPUTime();
+
+// Candidate triples of one stack level (paper defaults N_T = 12, N = 9; one exemplar serves
+// all three planes). Args: exemplar size (64: top-left crop of the 128^2 exemplar), spacing.
+void BM_CandidateTriples(benchmark::State& state) {
+  const int size = int(state.range(0)), spacing = int(state.range(1));
+  const Image image = size == 64 ? exemplar(128).crop(0, 0, 64, 64) : exemplar(size);
+  CandidateTriples triples;
+  for (auto _ : state) triples = computeCandidateTriples(image, image, image, spacing);
+  double best = 0;
+  for (std::int32_t p = 0; p < triples.pixelCount(); ++p) best += triples.errorsAt(Plane::XY, p)[0];
+  state.counters["mean_best_error"] = best / double(triples.pixelCount());
+}
+BENCHMARK(BM_CandidateTriples)
+    ->ArgsProduct({{64, 128}, {1, 2, 4, 8}})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime();
 
 }  // namespace
 

@@ -3,14 +3,18 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <mutex>
 
 #include "cli_common.h"
 #include "texsynth/core/atomic_file.h"
+#include "texsynth/field/field_io.h"
 #include "texsynth/io/file_kind.h"
 #include "texsynth/io/image_io.h"
 #include "texsynth/io/mesh_io.h"
 #include "texsynth/io/volume_io.h"
 #include "texsynth/render/render_mesh.h"
+#include "texsynth/solid/lazy_field.h"
+#include "texsynth/solid/lazy_solid_texture.h"
 #include "texsynth/solid/solid_consumers.h"
 #include "texsynth/solid/tile_blend_solid.h"
 #include "texsynth/solid/tile_deform_solid.h"
@@ -32,7 +36,41 @@ struct SolidArgs {
   float clamp = 0.45f, noiseScale = 2.5f;
   // tile-blend
   float tileSize = 0, blendExponent = 2.0f;
+  // lazy
+  std::string field;
+  int levels = 4, passes = 2;
 };
+
+// Records the points a consumer asks for (answering zeros), so that lazy synthesis can prepare
+// exactly those points before the consumer runs for real.
+class PointRecorder : public SolidTexture {
+ public:
+  explicit PointRecorder(int channels) : channels_(channels) {}
+  std::string name() const override { return "point-recorder"; }
+  int channels() const override { return channels_; }
+  void evaluateSerial(std::span<const Vec3f> points, std::span<const Vec3f>, std::span<float> values) const override {
+    std::fill(values.begin(), values.end(), 0.0f);
+    std::lock_guard<std::mutex> lock(mutex_);
+    points_.insert(points_.end(), points.begin(), points.end());
+  }
+  std::vector<Vec3f> take() { return std::move(points_); }
+
+ private:
+  int channels_;
+  mutable std::mutex mutex_;
+  mutable std::vector<Vec3f> points_;
+};
+
+// Runs `consume` on `solid`; a lazy solid first synthesizes exactly the points it will ask for.
+template <typename Consume>
+auto withPrepared(SolidTexture& solid, LazySolidTexture* lazy, Consume consume) {
+  if (lazy) {
+    PointRecorder recorder(solid.channels());
+    consume(static_cast<const SolidTexture&>(recorder));
+    lazy->prepare(recorder.take());
+  }
+  return consume(static_cast<const SolidTexture&>(solid));
+}
 
 // "z=0.5" -> (axis 2, 0.5).
 std::pair<int, float> parseSlice(const std::string& text) {
@@ -83,6 +121,22 @@ void checkOutputs(const SolidArgs& args) {
     throw ParameterError("--output", "nothing to write: give -o (mesh, slice or volume) or --render");
 }
 
+std::unique_ptr<SolidTexture> makeLazySolid(const SolidArgs& args, Image image, const SolidPlacement& placement,
+                                            std::uint64_t seed, json& report) {
+  LazySolidOptions options;
+  options.levels = args.levels;
+  options.passes = args.passes;
+  options.seed = seed;
+  LazyOrientation orientation;
+  if (!args.field.empty()) {
+    orientation = lazyOrientationFromField(readField(args.field).rotations, placement, options.levels);
+    report["field"] = args.field;
+  }
+  report["variant"] = args.field.empty() ? "lazy, identity field" : "lazy, guided by --field";
+  auto solid = std::make_shared<LazySolid>(image, options, std::move(orientation));
+  return std::make_unique<LazySolidTexture>(std::move(solid), placement);
+}
+
 std::unique_ptr<SolidTexture> makeSolid(const SolidArgs& args, const Box3f& box, std::uint64_t seed, json& report) {
   bool volumeExemplar = fileKind(args.exemplar) == FileKind::Volume;
   Volume volume;
@@ -93,6 +147,11 @@ std::unique_ptr<SolidTexture> makeSolid(const SolidArgs& args, const Box3f& box,
     image = readImage(args.exemplar);
   int tileSide = volumeExemplar ? std::max({volume.nx, volume.ny, volume.nz}) : std::max(image.width, image.height);
   SolidPlacement placement = fitPlacement(box, tileSide, args.tiles);
+  if (args.method == "lazy") {
+    if (volumeExemplar) throw ParameterError("--method", "lazy takes a 2D exemplar, not a volume");
+    return makeLazySolid(args, std::move(image), placement, seed, report);
+  }
+  if (!args.field.empty()) throw ParameterError("--field", "only --method lazy follows a field");
 
   if (args.method == "tile-blend") {
     if (volumeExemplar) throw ParameterError("--method", "tile-blend takes a 2D exemplar, not a volume");
@@ -144,6 +203,7 @@ void runSolid(const SolidArgs& args, const GlobalOptions& globals) {
     box = mesh.bounds();
   }
   std::unique_ptr<SolidTexture> solid = makeSolid(args, box, globals.seed, report);
+  auto* lazy = dynamic_cast<LazySolidTexture*>(solid.get());
   report["setup_seconds"] = lap();
 
   auto progress = makeProgress(globals);
@@ -153,13 +213,18 @@ void runSolid(const SolidArgs& args, const GlobalOptions& globals) {
     std::string ext = fileExtension(out);
     if (fileKind(out) == FileKind::Image) {
       auto [axis, position] = slices[nextSlice++];
-      writeImage(out, sampleSlice(*solid, box, axis, position, args.resolution));
+      writeImage(out, withPrepared(*solid, lazy, [&](const SolidTexture& s) {
+                   return sampleSlice(s, box, axis, position, args.resolution);
+                 }));
     } else if (ext == "nrrd" || ext == "vdb") {
       VolumeWriteOptions volumeOptions;
       volumeOptions.floatSamples = args.floatVolume;
-      writeVolume(out, sampleVolume(*solid, box, args.resolution), volumeOptions);
+      writeVolume(
+          out, withPrepared(*solid, lazy, [&](const SolidTexture& s) { return sampleVolume(s, box, args.resolution); }),
+          volumeOptions);
     } else {
       Mesh colored = mesh;
+      if (lazy) lazy->prepare(colored.positions);
       colorMeshVertices(colored, *solid);
       writeMesh(out, colored);
     }
@@ -172,11 +237,27 @@ void runSolid(const SolidArgs& args, const GlobalOptions& globals) {
     std::vector<std::pair<float, float>> views;
     for (int v = 0; v < args.views; ++v) views.push_back({30.0f + 90.0f * v, 20.0f});
     SurfaceColorFunction colorAt = surfaceColorFunction(*solid);
+    if (lazy)  // the renderer asks once per view for all visible points: prepare them first
+      colorAt = [lazy](const std::vector<Vec3f>& points, const std::vector<Vec3f>& normals,
+                       std::vector<Vec3f>& colors) {
+        lazy->prepare(points);
+        colors = lazy->evaluateColors(points, normals);
+      };
     writeImage(args.render, renderViews(mesh, &colorAt, views, options));
     report["outputs"].push_back({{"file", args.render}, {"seconds", lap()}});
     progress->advance(1);
   }
   progress->end();
+  if (lazy) {
+    const LazySolid& synthesis = lazy->solid();
+    for (int l = 0; l < synthesis.levels(); ++l) {
+      const LazyLevelStats& st = synthesis.stats()[std::size_t(l)];
+      report["levels"].push_back({{"level", l},
+                                  {"voxels_synthesized", st.voxelsSynthesized},
+                                  {"corrections", st.corrections},
+                                  {"blocks_cached", st.blocksCached}});
+    }
+  }
   if (!args.stats.empty()) writeFileAtomically(args.stats, report.dump(2) + "\n");
   if (globals.json)
     printJson(report);
@@ -197,6 +278,8 @@ Command registerSolidCommand(CLI::App& app, const GlobalOptions& globals) {
       "tiled in 3D (method 1); a 2D exemplar is stacked along x, y or z, or along all three and blended by the "
       "surface normal, w_i = (n.i)^(2p) (method 2).\n"
       "  tile-blend: triplanar histogram-preserving tiling and blending (Heitz & Neyret 2018) of a 2D exemplar.\n"
+      "  lazy: deterministic on-demand synthesis of coordinate triples (sketch-guided solid texturing), optionally "
+      "following a rotation --field; only the voxels the outputs need are synthesized.\n"
       "Outputs: -o FILE, as often as needed; the extension says what: .ply .obj .glb .gltf a colored copy of "
       "--mesh, .png .jpg .exr the next --slice, .nrrd .vdb the volume over the mesh's box (or the unit cube) at "
       "--resolution.");
@@ -204,7 +287,7 @@ Command registerSolidCommand(CLI::App& app, const GlobalOptions& globals) {
   sub->add_option("EXEMPLAR", args->exemplar, "2D exemplar image, or a 3D exemplar volume (.nrrd)")->required();
   sub->add_option("--method", args->method, "Synthesis method")
       ->capture_default_str()
-      ->check(CLI::IsMember({"tile-deform", "tile-blend"}));
+      ->check(CLI::IsMember({"tile-deform", "tile-blend", "lazy"}));
   sub->add_option("--mesh", args->mesh, "Mesh to texture (.obj .ply .off .stl)");
   sub->add_option("-o,--output", args->outputs, "Output file(s): colored mesh, slice image(s) or volume");
   sub->add_option_function<std::string>(
@@ -242,6 +325,11 @@ Command registerSolidCommand(CLI::App& app, const GlobalOptions& globals) {
   sub->add_option("--noise-scale", args->noiseScale, "tile-deform: grid cells per noise lattice spacing")
       ->capture_default_str();
   addTileBlendOptions(*sub, args->tileSize, args->blendExponent);
+  sub->add_option("--field", args->field, "lazy: rotation field (.tsfield from `texsynth field`) the texture follows");
+  sub->add_option("--levels", args->levels, "lazy: pyramid levels L")->capture_default_str()->check(CLI::Range(1, 8));
+  sub->add_option("--passes", args->passes, "lazy: correction passes per level (8 subpasses each)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 8));
   return {sub, [args, &globals] { runSolid(*args, globals); }};
 }
 

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "byte_stream.h"
+#include "cache_file.h"
 #include "texsynth/core/atomic_file.h"
 #include "texsynth/core/error.h"
 #include "texsynth/core/hash.h"
@@ -129,48 +130,25 @@ std::uint64_t analysisCacheKey(const Image& exemplar, const AnalysisOptions& opt
 }
 
 std::string analysisCachePath(const std::string& cacheDirectory, std::uint64_t key) {
-  char name[40];
-  std::snprintf(name, sizeof name, "exemplar-%016llx.tsxa", static_cast<unsigned long long>(key));
-  return (std::filesystem::path(cacheDirectory) / name).string();
+  return detail::cacheFilePath(cacheDirectory, "exemplar", key, "tsxa");
 }
 
 std::string serializeAnalysis(const ExemplarAnalysis& analysis, std::uint64_t key) {
-  std::string payload = serializePayload(analysis);
-  ByteWriter out;
-  out.bytes.append(kMagic, sizeof kMagic);
-  out.value(kAnalysisCacheFormatVersion);
-  out.value(key);
-  out.value(std::uint64_t(payload.size()));
-  out.value(Hasher().bytes(payload.data(), payload.size()).digest());
-  out.bytes += payload;
-  return std::move(out.bytes);
+  return detail::sealCacheRecord(std::string_view(kMagic, sizeof kMagic), kAnalysisCacheFormatVersion, key,
+                                 serializePayload(analysis));
 }
 
 std::optional<ExemplarAnalysis> deserializeAnalysis(std::string_view bytes, std::uint64_t expectedKey) {
-  ByteReader in(bytes);
-  std::string_view magic;
-  std::uint32_t version = 0;
-  std::uint64_t key = 0, payloadSize = 0, checksum = 0;
-  if (!in.raw(sizeof kMagic, magic) || magic != std::string_view(kMagic, sizeof kMagic)) return std::nullopt;
-  if (!in.value(version) || version != kAnalysisCacheFormatVersion) return std::nullopt;
-  if (!in.value(key) || key != expectedKey) return std::nullopt;
-  if (!in.value(payloadSize) || !in.value(checksum) || payloadSize != in.remaining()) return std::nullopt;
-  std::string_view payload;
-  if (!in.raw(payloadSize, payload)) return std::nullopt;
-  if (Hasher().bytes(payload.data(), payload.size()).digest() != checksum) return std::nullopt;
-  return parsePayload(payload);
+  auto payload =
+      detail::openCacheRecord(bytes, std::string_view(kMagic, sizeof kMagic), kAnalysisCacheFormatVersion, expectedKey);
+  if (!payload) return std::nullopt;
+  return parsePayload(*payload);
 }
 
 std::optional<ExemplarAnalysis> loadCachedAnalysis(const std::string& path, std::uint64_t expectedKey) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) return std::nullopt;
-  std::string bytes;
-  try {
-    bytes = readFileBytes(path);
-  } catch (const InputError&) {
-    return std::nullopt;  // unreadable: treat like a missing entry and recompute
-  }
-  return deserializeAnalysis(bytes, expectedKey);
+  std::optional<std::string> bytes = detail::readCacheFile(path);
+  if (!bytes) return std::nullopt;
+  return deserializeAnalysis(*bytes, expectedKey);
 }
 
 ExemplarAnalysis analyzeExemplarCached(const Image& exemplar, const AnalysisOptions& options,
@@ -185,11 +163,8 @@ ExemplarAnalysis analyzeExemplarCached(const Image& exemplar, const AnalysisOpti
   if (cached) return std::move(*cached);
 
   ExemplarAnalysis analysis = analyzeExemplar(exemplar, options, progress);
-  std::error_code ec;
-  std::filesystem::create_directories(cacheDirectory, ec);
-  if (ec) throw OutputError(cacheDirectory, "cannot create the cache directory: " + ec.message());
   progress.begin("exemplar: writing cache", 1);
-  writeFileAtomically(path, serializeAnalysis(analysis, key));
+  detail::writeCacheFile(cacheDirectory, path, serializeAnalysis(analysis, key));
   progress.advance();
   progress.end();
   return analysis;

@@ -1,0 +1,112 @@
+#pragma once
+// Internals of lazy solid synthesis (lazy_solid.h), shared by its source files: sparse 4^3 voxel
+// blocks, the dependency plan of one level, and the per-level kernels (initialization,
+// upsampling, correction). Not a stable API.
+#include <array>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include "texsynth/core/math.h"
+#include "texsynth/exemplar/analysis.h"
+#include "texsynth/exemplar/candidate_triples.h"
+#include "texsynth/solid/lazy_solid.h"
+
+namespace texsynth::lazy {
+
+constexpr int kB = LazySolid::kBlock;
+constexpr int kBlockVoxels = kB * kB * kB;
+constexpr int kMaxChannels = 8;
+constexpr int kCoordinateBias = 1 << 20;  // |voxel| < 2^20 keeps block indices in 21 bits
+
+using BlockKey = std::uint64_t;
+
+constexpr int floorDiv(int v, int d) {
+  return v >= 0 ? v / d : -((-v + d - 1) / d);
+}
+inline BlockKey blockKey(int bx, int by, int bz) {
+  const auto part = [](int b) { return std::uint64_t(b + kCoordinateBias) & 0x1fffffu; };
+  return part(bx) << 42 | part(by) << 21 | part(bz);
+}
+inline Vec3i blockIndex(BlockKey key) {
+  return {int((key >> 42) & 0x1fffffu) - kCoordinateBias, int((key >> 21) & 0x1fffffu) - kCoordinateBias,
+          int(key & 0x1fffffu) - kCoordinateBias};
+}
+inline BlockKey blockOfVoxel(const Vec3i& v) {
+  return blockKey(floorDiv(v.x(), kB), floorDiv(v.y(), kB), floorDiv(v.z(), kB));
+}
+inline int voxelSlot(const Vec3i& v) {
+  return ((v.z() - floorDiv(v.z(), kB) * kB) * kB + (v.y() - floorDiv(v.y(), kB) * kB)) * kB +
+         (v.x() - floorDiv(v.x(), kB) * kB);
+}
+
+using TripleBlock = std::array<CoordinateTriple, kBlockVoxels>;
+using BlockCache = std::unordered_map<BlockKey, TripleBlock>;
+
+// A block while its level is being synthesized: triples, their colours at the level (mean of
+// the three planes' stack images, all channels) and each voxel's local frame.
+struct WorkBlock {
+  Vec3i origin = Vec3i::Zero();  // voxel at slot 0
+  TripleBlock triples{};
+  std::array<float, kBlockVoxels * kMaxChannels> colors{};
+  std::array<Mat3f, kBlockVoxels> frames;  // columns: local axes in grid space
+};
+
+// A set of working blocks, sorted by key (fixed iteration order).
+struct WorkSet {
+  std::vector<BlockKey> keys;
+  std::vector<WorkBlock> blocks;
+  std::unordered_map<BlockKey, std::int32_t> index;
+
+  explicit WorkSet(std::vector<BlockKey> sortedKeys);
+  const WorkBlock* find(BlockKey key) const {
+    auto it = index.find(key);
+    return it == index.end() ? nullptr : &blocks[std::size_t(it->second)];
+  }
+};
+
+// One level's dependency plan under the standard pass/subpass scheme: layers[0] holds the
+// blocks to upsample (or initialize), layers[i] those every later step still needs after
+// correction step i, layers.back() the blocks the level must deliver. Each correction step
+// reads `readRadius` voxels around what it writes, so layer i-1 = layer i grown by that many
+// voxels (rounded up to blocks). Replacing this (history windows, dual grids) changes only here.
+struct LazyDependencyPlan {
+  std::vector<std::vector<BlockKey>> layers;
+};
+LazyDependencyPlan planLevel(const std::vector<BlockKey>& deliver, int steps, int readRadius);
+// Sorted, unique parent blocks (the coarser level) of `blocks`: block b reads parents in b/2.
+std::vector<BlockKey> parentBlocks(const std::vector<BlockKey>& blocks);
+
+// Everything one level's kernels need.
+struct LevelContext {
+  int level = 0, levels = 1;
+  int spacing = 1;           // h_l
+  int neighborhoodSize = 9;  // N_l
+  int width = 0, height = 0, channels = 0;
+  const ExemplarLevel* planes[3] = {nullptr, nullptr, nullptr};  // the level of I_xy, I_yz, I_zx
+  const CandidateTriples* triples = nullptr;
+  const LazySolidOptions* options = nullptr;
+  const LazyOrientation* orientation = nullptr;
+
+  // Radius (voxels) of everything a correction reads: the rotated neighbourhood and the 3x3
+  // candidate sources; sqrt(2) * N/2 when a field may rotate the planes.
+  int readRadius() const;
+  // Local frame of voxel v at this level (identity without orientation).
+  Mat3f frame(int level, const Vec3i& v) const;
+  // Colour (all channels) of a triple at this level into out[channels].
+  void color(const CoordinateTriple& t, float* out) const;
+};
+
+// Fills `block` (origin set) at the coarsest level: tiled candidate slabs, T([q^-1 v]).
+void initializeBlock(const LevelContext& ctx, WorkBlock& block);
+// Fills `block` from the coarser level's finished triples (eq. 3-4) plus jitter.
+void upsampleBlock(const LevelContext& ctx, const BlockCache& parents, WorkBlock& block);
+// Frames and colours of a block whose triples are set.
+void finishBlock(const LevelContext& ctx, WorkBlock& block);
+
+// One correction step: every block of `after` (a subset of `before`'s) copies its voxels from
+// `before` and corrects those of class `voxelClass` (x mod s, y mod s, z mod s as bits 0..2;
+// -1 = all voxels) reading only `before`. Returns the number of corrected voxels.
+std::int64_t correctStep(const LevelContext& ctx, const WorkSet& before, WorkSet& after, int s, int voxelClass);
+
+}  // namespace texsynth::lazy

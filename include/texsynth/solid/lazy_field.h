@@ -1,0 +1,30 @@
+#pragma once
+// Orientation sources for lazy solid synthesis. Header-only on purpose: the solid module does
+// not link the field module, so code that has a RotationField (the CLI) builds the adapter.
+#include <memory>
+#include <vector>
+
+#include "texsynth/field/rotation_field.h"
+#include "texsynth/solid/lazy_solid.h"
+#include "texsynth/solid/solid_texture.h"
+
+namespace texsynth {
+
+// The field at every level: level l (0 = coarsest) samples RotationField::pyramid's copy
+// downsampled L-1-l times, at the world point of the voxel under `placement`.
+inline LazyOrientation lazyOrientationFromField(const RotationField& field, const SolidPlacement& placement,
+                                                int levels) {
+  auto pyramid = std::make_shared<const std::vector<RotationField>>(field.pyramid(levels - 1));
+  return [pyramid, placement, levels](int level, const Vec3f& finestPosition) {
+    const Vec3f world = placement.origin + finestPosition / placement.pixelsPerUnit;
+    return (*pyramid)[std::size_t(levels - 1 - level)].sample(world);
+  };
+}
+
+// One rotation everywhere (tests, slab demos).
+inline LazyOrientation constantOrientation(const Quatf& rotation) {
+  const Quatf q = rotation.normalized();
+  return [q](int, const Vec3f&) { return q; };
+}
+
+}  // namespace texsynth

@@ -1,0 +1,130 @@
+#pragma once
+// Lazy (on-demand) solid synthesis guided by a rotation field (sketch-guided solid texturing
+// §2, §4, after Dong et al. 2008 and Lefebvre & Hoppe 2005). Every voxel of every pyramid level
+// stores a coordinate triple into the three plane exemplars I_xy, I_yz, I_zx; colours are looked
+// up at the end. Levels run coarsest first: initialization by tiled candidate slabs (per K^3
+// subpart, warped by the field), upsampling with the field (eq. 3-4), then correction passes of
+// s^3 subpasses matching three field-aligned N x N neighbourhoods in PCA space against candidate
+// triples gathered from the neighbours.
+//
+// Determinism: a voxel's triple depends only on (seed, voxel, level, pass). A request is planned
+// finest to coarsest as sets of 4^3-voxel blocks, each level grown by its full correction reach
+// (the standard pass/subpass scheme; history windows and dual grids, §5, would change only
+// LazyDependencyPlan), so the same voxel gets the same triple whatever was requested, for any
+// thread count. Finished blocks of every level are cached and reused by later requests.
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "texsynth/core/image.h"
+#include "texsynth/core/math.h"
+#include "texsynth/core/progress.h"
+#include "texsynth/exemplar/analysis.h"
+#include "texsynth/exemplar/candidate_triples.h"
+
+namespace texsynth {
+
+namespace lazy {
+struct LevelContext;
+}
+
+struct LazySolidOptions {
+  // Pyramid levels L (paper: 4). Level l (0 = coarsest) uses the exemplar stack at spacing
+  // h_l = 2^(L-1-l); every exemplar side must be >= 2^(L-1) * 2.
+  int levels = 4;
+  // N per level, coarsest first; the last entry serves every finer level (paper: 7 at the
+  // coarsest, 9 elsewhere). Odd, >= 3.
+  std::vector<int> neighborhoodSizes = {7, 9};
+  // Correction passes per level (paper: 2).
+  int passes = 2;
+  // s: each pass corrects the s^3 voxel classes (x mod s, y mod s, z mod s) in turn (paper:
+  // s^3 = 8). 1 corrects all voxels at once. In {1, 2}.
+  int subpassGrid = 2;
+  // K: the coarsest level is initialized per K^3 subpart (paper: 64), each part's slabs
+  // warped about its own centre and shifted by its own random offset. >= 1.
+  int subpartSize = 64;
+  // N_T candidate triples per exemplar pixel (paper: 12).
+  int candidateCount = 12;
+  // PCA dimensions per plane (paper: "about 20").
+  int pcaDimensions = 20;
+  // Jitter r_l of L&H 2005 (not in the sketch-guided paper): the upsampled triple moves by
+  // floor(h_l * r * xi + 1/2) along each local axis (eq. 4), xi uniform in [-1, 1]^3. Like the
+  // 2D engine's default, 0.4 only acts on the coarse levels (h >= 2). >= 0, finite.
+  float jitter = 0.4f;
+  std::uint64_t seed = 1;
+  // Directory of the exemplar-analysis and candidate-triple caches; empty = no disk cache.
+  std::string cacheDirectory;
+};
+
+// Throws ParameterError naming the bad option ("levels", "neighborhoodSizes", "passes",
+// "subpassGrid", "subpartSize", "candidateCount", "pcaDimensions", "jitter").
+void validateLazySolidOptions(const LazySolidOptions& options);
+
+// The local frame (global -> local rotation, as RotationField) at a position of `level`
+// (0 = coarsest), given in finest-level voxel units (exemplar pixels). See lazy_field.h for
+// the adapter from a RotationField; an empty function means the identity everywhere.
+using LazyOrientation = std::function<Quatf(int level, const Vec3f& finestPosition)>;
+
+// Work done per level (accumulated over all requests).
+struct LazyLevelStats {
+  std::int64_t voxelsSynthesized = 0;  // voxels upsampled / initialized (incl. margins)
+  std::int64_t corrections = 0;        // voxel corrections (one per voxel per pass)
+  std::int64_t blocksCached = 0;       // finished 4^3 blocks now in the cache
+};
+
+class LazySolid {
+ public:
+  static constexpr int kBlock = 4;  // block side in voxels (also the planning granularity)
+
+  // One exemplar for all three planes, or three (same size and channels). Analyses and
+  // candidate triples are computed (through the cache when options.cacheDirectory is set).
+  // Throws ParameterError for bad options or exemplars (too small for `levels`, mismatched).
+  LazySolid(const Image& exemplar, const LazySolidOptions& options, LazyOrientation orientation = {},
+            Progress& progress = noProgress());
+  LazySolid(const Image& xy, const Image& yz, const Image& zx, const LazySolidOptions& options,
+            LazyOrientation orientation = {}, Progress& progress = noProgress());
+  ~LazySolid();
+  LazySolid(const LazySolid&) = delete;
+  LazySolid& operator=(const LazySolid&) = delete;
+
+  const LazySolidOptions& options() const { return options_; }
+  int levels() const { return options_.levels; }
+  int colorChannels() const;
+  const ExemplarAnalysis& analysis(Plane plane) const;
+  const CandidateTriples& candidates(int level) const { return triples_[std::size_t(level)]; }
+  const std::vector<LazyLevelStats>& stats() const { return stats_; }
+
+  // Synthesizes (if not cached) every finest-level voxel listed, and whatever they depend on.
+  // |coordinate| must stay below 2^19 (ParameterError("voxels", ...)). Progress: one unit per level.
+  void synthesize(std::span<const Vec3i> voxels, Progress& progress = noProgress());
+  // Every voxel of the box [min, min + size).
+  void synthesizeBox(const Vec3i& min, const Vec3i& size, Progress& progress = noProgress());
+
+  // True if the finest-level voxel has been synthesized.
+  bool ready(const Vec3i& voxel) const;
+  // The triple of a synthesized voxel at `level` (finest = levels() - 1); TS_CHECK otherwise.
+  CoordinateTriple triple(const Vec3i& voxel, int level) const;
+  // Colour of a synthesized finest voxel: the mean of the three exemplars' colours at its
+  // triple (colour channels only), so each plane's texture contributes equally. Throws
+  // ParameterError("voxel", ...) if the voxel was never synthesized.
+  void color(const Vec3i& voxel, float* out) const;
+
+  struct Impl;
+
+ private:
+  void initialize(const Image& xy, const Image& yz, const Image& zx, Progress& progress);
+  void synthesizeBlocks(std::vector<std::uint64_t> blocks, Progress& progress);
+  lazy::LevelContext context(int level) const;
+
+  LazySolidOptions options_;
+  LazyOrientation orientation_;
+  std::vector<ExemplarAnalysis> analyses_;  // 1 (shared) or 3
+  std::vector<CandidateTriples> triples_;   // per level
+  std::vector<LazyLevelStats> stats_;
+  std::unique_ptr<Impl> impl_;  // the per-level block caches
+};
+
+}  // namespace texsynth

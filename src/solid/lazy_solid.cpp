@@ -1,0 +1,264 @@
+// Lazy solid synthesis driver: exemplar analyses and candidate triples per level, then for each
+// request a plan from the finest level down (which blocks each level must deliver, grown by
+// its correction reach) and synthesis from the coarsest level up, caching finished blocks.
+#include "texsynth/solid/lazy_solid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <string>
+
+#include "texsynth/core/error.h"
+#include "texsynth/core/parallel.h"
+#include "texsynth/exemplar/analysis_cache.h"
+#include "texsynth/exemplar/gaussian_stack.h"
+#include "texsynth/solid/lazy_blocks.h"
+
+namespace texsynth {
+
+using namespace lazy;
+
+struct LazySolid::Impl {
+  std::vector<BlockCache> caches;  // per level: finished (exact) blocks
+};
+
+namespace {
+
+constexpr int kMaxVoxelCoordinate = 1 << 19;
+constexpr std::int64_t kInitChunk = 16;
+
+void require(bool ok, const char* parameter, const std::string& problem) {
+  if (!ok) throw ParameterError(parameter, problem);
+}
+
+int neighborhoodSizeOf(const LazySolidOptions& options, int level) {
+  return options.neighborhoodSizes[std::min<std::size_t>(std::size_t(level), options.neighborhoodSizes.size() - 1)];
+}
+
+// The s^3 voxel classes (bits x | y << 1 | z << 2) in an order that alternates far-apart
+// classes, as L&H's 2D order alternates diagonals; s = 1: one step over all voxels.
+std::vector<int> subpassClasses(int s) {
+  if (s == 1) return {-1};
+  return {0, 7, 1, 6, 2, 5, 4, 3};
+}
+
+void removeCached(std::vector<BlockKey>& keys, const BlockCache& cache) {
+  keys.erase(std::remove_if(keys.begin(), keys.end(), [&](BlockKey k) { return cache.count(k) != 0; }), keys.end());
+}
+
+}  // namespace
+
+void validateLazySolidOptions(const LazySolidOptions& options) {
+  require(options.levels >= 1 && options.levels <= 8, "levels",
+          "must be in [1, 8], got " + std::to_string(options.levels));
+  require(!options.neighborhoodSizes.empty(), "neighborhoodSizes", "needs at least one N");
+  for (int n : options.neighborhoodSizes)
+    require(n >= 3 && n % 2 == 1 && n <= 15, "neighborhoodSizes",
+            "each N must be odd and in [3, 15], got " + std::to_string(n));
+  require(options.passes >= 0 && options.passes <= 8, "passes",
+          "must be in [0, 8], got " + std::to_string(options.passes));
+  require(options.subpassGrid == 1 || options.subpassGrid == 2, "subpassGrid",
+          "s must be 1 or 2 (s^3 subpasses), got " + std::to_string(options.subpassGrid));
+  require(options.subpartSize >= 1, "subpartSize", "K must be >= 1, got " + std::to_string(options.subpartSize));
+  require(options.candidateCount >= 1 && options.candidateCount <= 64, "candidateCount",
+          "N_T must be in [1, 64], got " + std::to_string(options.candidateCount));
+  require(options.pcaDimensions >= 1, "pcaDimensions", "must be >= 1, got " + std::to_string(options.pcaDimensions));
+  require(std::isfinite(options.jitter) && options.jitter >= 0.0f, "jitter", "must be finite and >= 0");
+}
+
+LazySolid::LazySolid(const Image& exemplar, const LazySolidOptions& options, LazyOrientation orientation,
+                     Progress& progress)
+    : options_(options), orientation_(std::move(orientation)), impl_(std::make_unique<Impl>()) {
+  initialize(exemplar, exemplar, exemplar, progress);
+}
+
+LazySolid::LazySolid(const Image& xy, const Image& yz, const Image& zx, const LazySolidOptions& options,
+                     LazyOrientation orientation, Progress& progress)
+    : options_(options), orientation_(std::move(orientation)), impl_(std::make_unique<Impl>()) {
+  initialize(xy, yz, zx, progress);
+}
+
+LazySolid::~LazySolid() = default;
+
+void LazySolid::initialize(const Image& xy, const Image& yz, const Image& zx, Progress& progress) {
+  validateLazySolidOptions(options_);
+  const Image* images[3] = {&xy, &yz, &zx};
+  for (const Image* image : images) require(!image->empty(), "exemplar", "is empty");
+  for (const Image* image : images)
+    require(image->width == xy.width && image->height == xy.height && image->channels == xy.channels, "exemplar",
+            "the three plane exemplars must have the same size and channels");
+  require(xy.channels < kMaxChannels, "exemplar", "has too many channels (" + std::to_string(xy.channels) + ")");
+  const int maxLevels = defaultStackLevelCount(xy.width, xy.height);
+  require(options_.levels <= maxLevels, "levels",
+          std::to_string(options_.levels) + " levels need an exemplar of at least " +
+              std::to_string(1 << options_.levels) + " pixels a side (this one allows " + std::to_string(maxLevels) +
+              ")");
+
+  AnalysisOptions analysisOptions;
+  analysisOptions.levelCount = options_.levels;
+  analysisOptions.neighborhoodSize = options_.neighborhoodSizes.back();
+  analysisOptions.levelNeighborhoodSizes = options_.neighborhoodSizes;
+  analysisOptions.pcaDimensions = options_.pcaDimensions;
+  analysisOptions.similarCount = 1;  // correction draws candidates from the triples instead
+  const bool shared = &xy == &yz && &yz == &zx;
+  for (int p = 0; p < (shared ? 1 : 3); ++p)
+    analyses_.push_back(options_.cacheDirectory.empty()
+                            ? analyzeExemplar(*images[p], analysisOptions, progress)
+                            : analyzeExemplarCached(*images[p], analysisOptions, options_.cacheDirectory, progress));
+
+  for (int l = 0; l < options_.levels; ++l) {
+    CandidateTripleOptions tripleOptions;
+    tripleOptions.count = options_.candidateCount;
+    tripleOptions.neighborhoodSize = neighborhoodSizeOf(options_, l);
+    const Image& a = analysis(Plane::XY).levels[std::size_t(l)].image;
+    const Image& b = analysis(Plane::YZ).levels[std::size_t(l)].image;
+    const Image& c = analysis(Plane::ZX).levels[std::size_t(l)].image;
+    const int spacing = analyses_[0].levels[std::size_t(l)].spacing;
+    triples_.push_back(
+        options_.cacheDirectory.empty()
+            ? computeCandidateTriples(a, b, c, spacing, tripleOptions, progress)
+            : computeCandidateTriplesCached(a, b, c, spacing, tripleOptions, options_.cacheDirectory, progress));
+  }
+  stats_.assign(std::size_t(options_.levels), {});
+  impl_->caches.resize(std::size_t(options_.levels));
+}
+
+int LazySolid::colorChannels() const {
+  return analyses_[0].colorChannels;
+}
+
+const ExemplarAnalysis& LazySolid::analysis(Plane plane) const {
+  return analyses_.size() == 1 ? analyses_[0] : analyses_[std::size_t(plane)];
+}
+
+void LazySolid::synthesize(std::span<const Vec3i> voxels, Progress& progress) {
+  std::vector<BlockKey> blocks;
+  blocks.reserve(voxels.size() / 8 + 1);
+  for (const Vec3i& v : voxels) {
+    require(v.cwiseAbs().maxCoeff() < kMaxVoxelCoordinate, "voxels", "coordinates must stay below 2^19 in magnitude");
+    blocks.push_back(blockOfVoxel(v));
+  }
+  synthesizeBlocks(std::move(blocks), progress);
+}
+
+void LazySolid::synthesizeBox(const Vec3i& min, const Vec3i& size, Progress& progress) {
+  require((size.array() >= 1).all(), "voxels", "the box must have a positive size");
+  const Vec3i max = min + size - Vec3i::Ones();
+  require(min.cwiseAbs().maxCoeff() < kMaxVoxelCoordinate && max.cwiseAbs().maxCoeff() < kMaxVoxelCoordinate, "voxels",
+          "coordinates must stay below 2^19 in magnitude");
+  const Vec3i b0 = Vec3i(floorDiv(min.x(), kB), floorDiv(min.y(), kB), floorDiv(min.z(), kB));
+  const Vec3i b1 = Vec3i(floorDiv(max.x(), kB), floorDiv(max.y(), kB), floorDiv(max.z(), kB));
+  std::vector<BlockKey> blocks;
+  for (int z = b0.z(); z <= b1.z(); ++z)
+    for (int y = b0.y(); y <= b1.y(); ++y)
+      for (int x = b0.x(); x <= b1.x(); ++x) blocks.push_back(blockKey(x, y, z));
+  synthesizeBlocks(std::move(blocks), progress);
+}
+
+LevelContext LazySolid::context(int level) const {
+  LevelContext ctx;
+  ctx.level = level;
+  ctx.levels = options_.levels;
+  ctx.spacing = analyses_[0].levels[std::size_t(level)].spacing;
+  ctx.neighborhoodSize = neighborhoodSizeOf(options_, level);
+  ctx.width = analyses_[0].width;
+  ctx.height = analyses_[0].height;
+  ctx.channels = analyses_[0].levels[std::size_t(level)].image.channels;
+  for (int p = 0; p < 3; ++p) ctx.planes[p] = &analysis(Plane(p)).levels[std::size_t(level)];
+  ctx.triples = &triples_[std::size_t(level)];
+  ctx.options = &options_;
+  ctx.orientation = &orientation_;
+  return ctx;
+}
+
+void LazySolid::synthesizeBlocks(std::vector<BlockKey> blocks, Progress& progress) {
+  const int levels = options_.levels;
+  const std::vector<int> classes = subpassClasses(options_.subpassGrid);
+  const int steps = options_.passes * int(classes.size());
+  std::sort(blocks.begin(), blocks.end());
+  blocks.erase(std::unique(blocks.begin(), blocks.end()), blocks.end());
+
+  // Plan, finest to coarsest: what each level delivers and what it must start from.
+  std::vector<LazyDependencyPlan> plans(static_cast<std::size_t>(levels));
+  std::vector<BlockKey> deliver = std::move(blocks);
+  removeCached(deliver, impl_->caches[std::size_t(levels - 1)]);
+  for (int l = levels - 1; l >= 0 && !deliver.empty(); --l) {
+    plans[std::size_t(l)] = planLevel(deliver, steps, context(l).readRadius());
+    if (l == 0) break;
+    deliver = parentBlocks(plans[std::size_t(l)].layers.front());
+    removeCached(deliver, impl_->caches[std::size_t(l - 1)]);
+  }
+
+  progress.begin("lazy solid synthesis", levels);
+  for (int l = 0; l < levels; ++l) {
+    const LazyDependencyPlan& plan = plans[std::size_t(l)];
+    if (plan.layers.empty()) {
+      progress.advance(1);
+      continue;
+    }
+    const LevelContext ctx = context(l);
+    WorkSet current(plan.layers.front());
+    const BlockCache* parents = l > 0 ? &impl_->caches[std::size_t(l - 1)] : nullptr;
+    parallelForChunks(0, std::int64_t(current.keys.size()), kInitChunk, [&](std::int64_t begin, std::int64_t end) {
+      for (std::int64_t i = begin; i < end; ++i) {
+        WorkBlock& block = current.blocks[std::size_t(i)];
+        if (parents)
+          upsampleBlock(ctx, *parents, block);
+        else
+          initializeBlock(ctx, block);
+        finishBlock(ctx, block);
+      }
+    });
+    LazyLevelStats& stats = stats_[std::size_t(l)];
+    stats.voxelsSynthesized += std::int64_t(current.keys.size()) * kBlockVoxels;
+    int step = 0;
+    for (int pass = 0; pass < options_.passes; ++pass)
+      for (int voxelClass : classes) {
+        WorkSet next(plan.layers[std::size_t(++step)]);
+        stats.corrections += correctStep(ctx, current, next, options_.subpassGrid, voxelClass);
+        current = std::move(next);
+      }
+    BlockCache& cache = impl_->caches[std::size_t(l)];
+    for (std::size_t i = 0; i < current.keys.size(); ++i) cache.emplace(current.keys[i], current.blocks[i].triples);
+    stats.blocksCached = std::int64_t(cache.size());
+    progress.advance(1);
+  }
+  progress.end();
+}
+
+bool LazySolid::ready(const Vec3i& voxel) const {
+  return impl_->caches.back().count(blockOfVoxel(voxel)) != 0;
+}
+
+CoordinateTriple LazySolid::triple(const Vec3i& voxel, int level) const {
+  TS_CHECK(level >= 0 && level < options_.levels);
+  const BlockCache& cache = impl_->caches[std::size_t(level)];
+  const auto it = cache.find(blockOfVoxel(voxel));
+  TS_CHECK_MSG(it != cache.end(), "voxel not synthesized at this level");
+  return it->second[std::size_t(voxelSlot(voxel))];
+}
+
+namespace {
+// Out of line: building the message inline trips a false -Wrestrict in GCC 12's string code.
+[[noreturn]] __attribute__((noinline)) void throwNotSynthesized(const Vec3i& voxel) {
+  std::string where = "(";
+  for (int axis = 0; axis < 3; ++axis) (where += std::to_string(voxel[axis])) += axis < 2 ? ", " : ")";
+  throw ParameterError("voxel", where + " was not synthesized: call prepare/synthesize first");
+}
+}  // namespace
+
+void LazySolid::color(const Vec3i& voxel, float* out) const {
+  const BlockCache& cache = impl_->caches.back();
+  const auto it = cache.find(blockOfVoxel(voxel));
+  if (it == cache.end()) throwNotSynthesized(voxel);
+  const CoordinateTriple t = it->second[std::size_t(voxelSlot(voxel))];
+  const int channels = colorChannels();
+  const float* a = analysis(Plane::XY).levels.back().image.pixels.data();
+  const float* b = analysis(Plane::YZ).levels.back().image.pixels.data();
+  const float* c = analysis(Plane::ZX).levels.back().image.pixels.data();
+  const std::size_t stride = std::size_t(analyses_[0].channels());
+  for (int i = 0; i < channels; ++i)
+    out[i] = (a[t.xy * stride + i] + b[t.yz * stride + i] + c[t.zx * stride + i]) * (1.0f / 3.0f);
+}
+
+}  // namespace texsynth

@@ -1,0 +1,38 @@
+#include "texsynth/solid/lazy_solid_texture.h"
+
+#include <cmath>
+
+#include "texsynth/core/error.h"
+
+namespace texsynth {
+
+LazySolidTexture::LazySolidTexture(std::shared_ptr<LazySolid> solid, const SolidPlacement& placement)
+    : solid_(std::move(solid)), placement_(placement) {
+  if (!solid_) throw ParameterError("solid", "is null");
+  validatePlacement(placement_);
+}
+
+Vec3i LazySolidTexture::voxelOf(const Vec3f& point) const {
+  const Vec3f e = placement_.toExemplar(point);
+  return {int(std::floor(e.x())), int(std::floor(e.y())), int(std::floor(e.z()))};
+}
+
+void LazySolidTexture::prepare(std::span<const Vec3f> points, Progress& progress) {
+  std::vector<Vec3i> voxels;
+  voxels.reserve(points.size());
+  for (const Vec3f& p : points) {
+    const Vec3f e = placement_.toExemplar(p);
+    if (!e.allFinite() || e.cwiseAbs().maxCoeff() >= float(1 << 19))
+      throw ParameterError("points", "must be finite and within 2^19 exemplar pixels of the placement origin");
+    voxels.push_back(voxelOf(p));
+  }
+  solid_->synthesize(voxels, progress);
+}
+
+void LazySolidTexture::evaluateSerial(std::span<const Vec3f> points, std::span<const Vec3f>,
+                                      std::span<float> values) const {
+  const std::size_t c = std::size_t(channels());
+  for (std::size_t i = 0; i < points.size(); ++i) solid_->color(voxelOf(points[i]), values.data() + i * c);
+}
+
+}  // namespace texsynth

@@ -1,0 +1,203 @@
+// Lazy solid synthesis: determinism across requests and thread counts, quality against random
+// triples, field alignment of a stripe exemplar, and rejection of bad options.
+#include "texsynth/solid/lazy_solid.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "test_support.h"
+#include "texsynth/core/parallel.h"
+#include "texsynth/core/random.h"
+#include "texsynth/eval/metrics.h"
+#include "texsynth/solid/lazy_field.h"
+#include "texsynth/solid/lazy_solid_texture.h"
+
+namespace texsynth {
+namespace {
+
+// Small settings that keep every test fast (the paper's defaults reach ~100 voxels out).
+LazySolidOptions fastOptions() {
+  LazySolidOptions o;
+  o.levels = 3;
+  o.neighborhoodSizes = {5};
+  o.passes = 2;
+  o.subpassGrid = 1;
+  o.candidateCount = 6;
+  o.pcaDimensions = 12;
+  o.seed = 5;
+  return o;
+}
+
+const Image& pattern() {
+  static const Image image = test::makeTestPattern(32, 32, 3);
+  return image;
+}
+
+void expectSameTriples(const LazySolid& a, const LazySolid& b, const Vec3i& min, const Vec3i& size) {
+  for (int z = min.z(); z < min.z() + size.z(); ++z)
+    for (int y = min.y(); y < min.y() + size.y(); ++y)
+      for (int x = min.x(); x < min.x() + size.x(); ++x) {
+        const CoordinateTriple ta = a.triple({x, y, z}, a.levels() - 1), tb = b.triple({x, y, z}, b.levels() - 1);
+        ASSERT_EQ(ta, tb) << "voxel " << x << "," << y << "," << z;
+      }
+}
+
+void expectRequestIndependent(const LazySolidOptions& options, const LazyOrientation& orientation,
+                              const Vec3i& biggerMin, const Vec3i& biggerSize) {
+  LazySolid alone(pattern(), options, orientation), box(pattern(), options, orientation),
+      bigger(pattern(), options, orientation);
+  const Vec3i voxel(5, -3, 7);
+  alone.synthesize(std::vector<Vec3i>{voxel});
+  box.synthesizeBox({0, -8, 0}, {8, 8, 8});
+  bigger.synthesizeBox(biggerMin, biggerSize);
+  // Whole blocks are cached: check the requested voxel's block in all three.
+  expectSameTriples(alone, box, {4, -4, 4}, {4, 4, 4});
+  expectSameTriples(box, bigger, {0, -8, 0}, {8, 8, 8});
+  // A later request reuses and agrees with earlier work.
+  alone.synthesizeBox({0, -8, 0}, {8, 8, 8});
+  expectSameTriples(alone, bigger, {0, -8, 0}, {8, 8, 8});
+}
+
+TEST(LazySolid, SameVoxelSameTripleWhateverWasRequested) {
+  expectRequestIndependent(fastOptions(), {}, {-13, -21, -9}, {30, 27, 25});
+}
+
+TEST(LazySolid, RequestIndependentWithRotatedFieldAndSubpasses) {
+  LazySolidOptions options = fastOptions();
+  options.passes = 1;
+  options.subpassGrid = 2;
+  options.levels = 2;
+  const Quatf q(Eigen::AngleAxisf(0.6f, Vec3f(1, 2, 0.5f).normalized()));
+  expectRequestIndependent(options, constantOrientation(q), {-3, -10, -1}, {12, 11, 10});
+}
+
+TEST(LazySolid, IndependentOfThreadCount) {
+  LazySolidOptions options = fastOptions();
+  const Quatf q(Eigen::AngleAxisf(0.4f, Vec3f::UnitZ()));
+  auto run = [&](int threads) {
+    ThreadLimit limit(threads);
+    auto solid = std::make_unique<LazySolid>(pattern(), options, constantOrientation(q));
+    solid->synthesizeBox({-6, 0, 2}, {12, 12, 8});
+    return solid;
+  };
+  auto one = run(1), two = run(2);
+  expectSameTriples(*one, *two, {-6, 0, 2}, {12, 12, 8});
+  for (std::size_t l = 0; l < one->stats().size(); ++l) {
+    EXPECT_EQ(one->stats()[l].corrections, two->stats()[l].corrections);
+    EXPECT_GT(one->stats()[l].corrections, 0);
+  }
+}
+
+Volume volumeOf(const LazySolid& solid, int n, bool randomTriples) {
+  Volume volume(n, n, n, solid.colorChannels());
+  const ExemplarAnalysis& a = solid.analysis(Plane::XY);
+  const Image& image = a.levels.back().image;
+  for (int z = 0; z < n; ++z)
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x) {
+        if (!randomTriples) {
+          solid.color({x, y, z}, volume.voxel(x, y, z));
+          continue;
+        }
+        const std::uint64_t id = latticeId(x, y, z);
+        for (int c = 0; c < volume.channels; ++c) volume.at(x, y, z, c) = 0;
+        for (int p = 0; p < 3; ++p) {
+          const std::uint32_t pixel =
+              uniformBelow(hashKey(11, id, 0, std::uint64_t(p)), std::uint32_t(a.width * a.height));
+          for (int c = 0; c < volume.channels; ++c)
+            volume.at(x, y, z, c) += image.pixels[pixel * std::size_t(image.channels) + c] / 3.0f;
+        }
+      }
+  return volume;
+}
+
+TEST(LazySolid, FullVolumeSlicesAreCloserToTheExemplarThanRandomTriples) {
+  LazySolidOptions options = fastOptions();
+  LazySolid solid(pattern(), options);
+  const int n = 32;
+  solid.synthesizeBox({0, 0, 0}, {n, n, n});
+  MetricOptions metrics;
+  metrics.patchSize = 5;
+  metrics.slicesPerAxis = 2;
+  const double synthesized = evaluateVolume(pattern(), volumeOf(solid, n, false), metrics).mean.coherence;
+  const double random = evaluateVolume(pattern(), volumeOf(solid, n, true), metrics).mean.coherence;
+  EXPECT_LT(synthesized, 0.75 * random) << "synthesized " << synthesized << " random " << random;
+}
+
+// A solid of layers normal to x: I_xy varies along its u (= x), I_zx along its v (= x), I_yz is
+// flat. Returns the mean absolute colour step along world x and along world y.
+std::pair<double, double> stripeSteps(const LazyOrientation& orientation) {
+  const int size = 32;
+  Image xy(size, size, 3), yz(size, size, 3, 0.5f), zx(size, size, 3);
+  for (int j = 0; j < size; ++j)
+    for (int i = 0; i < size; ++i)
+      for (int c = 0; c < 3; ++c) {
+        xy.at(i, j, c) = 0.5f + 0.4f * std::sin(6.2831853f * float(i) / 8.0f);
+        zx.at(i, j, c) = 0.5f + 0.4f * std::sin(6.2831853f * float(j) / 8.0f);
+      }
+  LazySolidOptions options = fastOptions();
+  options.levels = 2;
+  LazySolid solid(xy, yz, zx, options, orientation);
+  const int n = 16;
+  solid.synthesizeBox({0, 0, 0}, {n, n, n});
+  double stepX = 0, stepY = 0;
+  float a[3], b[3], c[3];
+  for (int z = 0; z < n; ++z)
+    for (int y = 0; y + 1 < n; ++y)
+      for (int x = 0; x + 1 < n; ++x) {
+        solid.color({x, y, z}, a);
+        solid.color({x + 1, y, z}, b);
+        solid.color({x, y + 1, z}, c);
+        stepX += std::abs(a[0] - b[0]);
+        stepY += std::abs(a[0] - c[0]);
+      }
+  return {stepX, stepY};
+}
+
+TEST(LazySolid, StripesFollowARotatedField) {
+  const auto [identityX, identityY] = stripeSteps({});
+  EXPECT_GT(identityX, 4.0 * identityY) << identityX << " vs " << identityY;
+  const Quatf quarter(Eigen::AngleAxisf(1.5707963f, Vec3f::UnitZ()));
+  const auto [rotatedX, rotatedY] = stripeSteps(constantOrientation(quarter));
+  EXPECT_GT(rotatedY, 4.0 * rotatedX) << rotatedX << " vs " << rotatedY;
+}
+
+TEST(LazySolid, RejectsBadOptions) {
+  auto expectBad = [](const std::string& parameter, auto change) {
+    LazySolidOptions options = fastOptions();
+    change(options);
+    test::expectParameterError([&] { LazySolid solid(pattern(), options); }, parameter);
+  };
+  expectBad("levels", [](LazySolidOptions& o) { o.levels = 0; });
+  expectBad("levels", [](LazySolidOptions& o) { o.levels = 6; });  // 32 px allow 5
+  expectBad("neighborhoodSizes", [](LazySolidOptions& o) { o.neighborhoodSizes = {4}; });
+  expectBad("neighborhoodSizes", [](LazySolidOptions& o) { o.neighborhoodSizes = {}; });
+  expectBad("passes", [](LazySolidOptions& o) { o.passes = -1; });
+  expectBad("subpassGrid", [](LazySolidOptions& o) { o.subpassGrid = 3; });
+  expectBad("subpartSize", [](LazySolidOptions& o) { o.subpartSize = 0; });
+  expectBad("candidateCount", [](LazySolidOptions& o) { o.candidateCount = 0; });
+  expectBad("jitter", [](LazySolidOptions& o) { o.jitter = std::nanf(""); });
+  test::expectParameterError(
+      [] { LazySolid solid(pattern(), test::makeTestPattern(16, 32), pattern(), fastOptions()); }, "exemplar");
+}
+
+TEST(LazySolidTexture, EvaluatesPreparedPointsAndRejectsOthers) {
+  auto solid = std::make_shared<LazySolid>(pattern(), fastOptions());
+  SolidPlacement placement;
+  placement.pixelsPerUnit = 16.0f;
+  LazySolidTexture texture(solid, placement);
+  std::vector<Vec3f> points = {{0.1f, 0.2f, 0.3f}, {0.15f, 0.25f, 0.3f}};
+  std::vector<float> values(points.size() * 3);
+  test::expectParameterError([&] { texture.evaluate(points, {}, values); }, "voxel");
+  texture.prepare(points);
+  texture.evaluate(points, {}, values);
+  float expected[3];
+  solid->color(texture.voxelOf(points[1]), expected);
+  EXPECT_EQ(values[3], expected[0]);
+  test::expectParameterError([&] { LazySolidTexture bad(nullptr, placement); }, "solid");
+  test::expectParameterError([&] { texture.prepare(std::vector<Vec3f>{{std::nanf(""), 0, 0}}); }, "points");
+}
+
+}  // namespace
+}  // namespace texsynth
