@@ -1,20 +1,17 @@
-// texsynth solid EXEMPLAR --method tile-deform|tile-blend: a solid (3D) texture, shown on a
+// texsynth solid EXEMPLAR --method tile-deform|tile-blend|lazy: a solid (3D) texture, shown on a
 // mesh (colored copy, per-pixel render), as slices, or as a whole volume.
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <mutex>
 
-#include "cli_common.h"
+#include "solid_args.h"
 #include "texsynth/core/atomic_file.h"
-#include "texsynth/field/field_io.h"
 #include "texsynth/io/file_kind.h"
 #include "texsynth/io/image_io.h"
 #include "texsynth/io/mesh_io.h"
 #include "texsynth/io/volume_io.h"
 #include "texsynth/render/render_mesh.h"
-#include "texsynth/solid/lazy_field.h"
-#include "texsynth/solid/lazy_solid_texture.h"
 #include "texsynth/solid/solid_consumers.h"
 #include "texsynth/solid/tile_blend_solid.h"
 #include "texsynth/solid/tile_deform_solid.h"
@@ -24,22 +21,6 @@ namespace texsynth::cli {
 using nlohmann::json;
 
 namespace {
-
-struct SolidArgs {
-  std::string exemplar, method = "tile-deform", mesh, render, stats, stack = "xyz";
-  std::vector<std::string> outputs, slices;
-  int resolution = 128, renderSize = 768, views = 2;
-  float tiles = 2.0f, sharpness = 4.0f;
-  bool floatVolume = false;
-  // tile-deform
-  std::string cell = "0", lambda = "0.4";
-  float clamp = 0.45f, noiseScale = 2.5f;
-  // tile-blend
-  float tileSize = 0, blendExponent = 2.0f;
-  // lazy
-  std::string field;
-  int levels = 4, passes = 2;
-};
 
 // Records the points a consumer asks for (answering zeros), so that lazy synthesis can prepare
 // exactly those points before the consumer runs for real.
@@ -61,13 +42,14 @@ class PointRecorder : public SolidTexture {
   mutable std::vector<Vec3f> points_;
 };
 
-// Runs `consume` on `solid`; a lazy solid first synthesizes exactly the points it will ask for.
+// Runs `consume` on `solid`; a solid that synthesizes on demand first prepares exactly the
+// points the consumer will ask for.
 template <typename Consume>
-auto withPrepared(SolidTexture& solid, LazySolidTexture* lazy, Consume consume) {
-  if (lazy) {
+auto withPrepared(SolidTexture& solid, Consume consume) {
+  if (solid.preparesOnDemand()) {
     PointRecorder recorder(solid.channels());
     consume(static_cast<const SolidTexture&>(recorder));
-    lazy->prepare(recorder.take());
+    solid.prepare(recorder.take());
   }
   return consume(static_cast<const SolidTexture&>(solid));
 }
@@ -121,36 +103,26 @@ void checkOutputs(const SolidArgs& args) {
     throw ParameterError("--output", "nothing to write: give -o (mesh, slice or volume) or --render");
 }
 
-std::unique_ptr<SolidTexture> makeLazySolid(const SolidArgs& args, Image image, const SolidPlacement& placement,
-                                            std::uint64_t seed, json& report) {
-  LazySolidOptions options;
-  options.levels = args.levels;
-  options.passes = args.passes;
-  options.seed = seed;
-  LazyOrientation orientation;
-  if (!args.field.empty()) {
-    orientation = lazyOrientationFromField(readField(args.field).rotations, placement, options.levels);
-    report["field"] = args.field;
-  }
-  report["variant"] = args.field.empty() ? "lazy, identity field" : "lazy, guided by --field";
-  auto solid = std::make_shared<LazySolid>(image, options, std::move(orientation));
-  return std::make_unique<LazySolidTexture>(std::move(solid), placement);
-}
-
-std::unique_ptr<SolidTexture> makeSolid(const SolidArgs& args, const Box3f& box, std::uint64_t seed, json& report) {
-  bool volumeExemplar = fileKind(args.exemplar) == FileKind::Volume;
+std::unique_ptr<SolidTexture> makeSolid(const SolidArgs& args, const Mesh& mesh, const Box3f& box, std::uint64_t seed,
+                                        json& report, LazyBuild& lazy) {
+  const std::string& exemplar = args.exemplars.front();
+  bool volumeExemplar = fileKind(exemplar) == FileKind::Volume;
   Volume volume;
   Image image;
   if (volumeExemplar)
-    volume = readVolume(args.exemplar);
+    volume = readVolume(exemplar);
   else
-    image = readImage(args.exemplar);
+    image = readImage(exemplar);
   int tileSide = volumeExemplar ? std::max({volume.nx, volume.ny, volume.nz}) : std::max(image.width, image.height);
   SolidPlacement placement = fitPlacement(box, tileSide, args.tiles);
   if (args.method == "lazy") {
-    if (volumeExemplar) throw ParameterError("--method", "lazy takes a 2D exemplar, not a volume");
-    return makeLazySolid(args, std::move(image), placement, seed, report);
+    if (volumeExemplar) throw ParameterError("--method", "lazy takes 2D exemplars, not a volume");
+    lazy = makeLazySolid(args, mesh, placement, seed, report);
+    return std::move(lazy.texture);
   }
+  if (args.exemplars.size() > 1)
+    throw ParameterError("EXEMPLAR", "only --method lazy takes three exemplars (XY YZ ZX)");
+  if (!args.inner.empty()) throw ParameterError("--inner", "only --method lazy fills regions");
   if (!args.field.empty()) throw ParameterError("--field", "only --method lazy follows a field");
 
   if (args.method == "tile-blend") {
@@ -185,7 +157,7 @@ void runSolid(const SolidArgs& args, const GlobalOptions& globals) {
   checkOutputs(args);
   std::vector<std::pair<int, float>> slices;
   for (const std::string& s : args.slices) slices.push_back(parseSlice(s));
-  json report = {{"exemplar", args.exemplar}, {"method", args.method}, {"seed", globals.seed}};
+  json report = {{"exemplar", args.exemplars}, {"method", args.method}, {"seed", globals.seed}};
   auto clock = std::chrono::steady_clock::now();
   auto lap = [&clock] {
     auto now = std::chrono::steady_clock::now();
@@ -202,8 +174,8 @@ void runSolid(const SolidArgs& args, const GlobalOptions& globals) {
     mesh = readMesh(args.mesh);
     box = mesh.bounds();
   }
-  std::unique_ptr<SolidTexture> solid = makeSolid(args, box, globals.seed, report);
-  auto* lazy = dynamic_cast<LazySolidTexture*>(solid.get());
+  LazyBuild lazy;
+  std::unique_ptr<SolidTexture> solid = makeSolid(args, mesh, box, globals.seed, report, lazy);
   report["setup_seconds"] = lap();
 
   auto progress = makeProgress(globals);
@@ -213,18 +185,18 @@ void runSolid(const SolidArgs& args, const GlobalOptions& globals) {
     std::string ext = fileExtension(out);
     if (fileKind(out) == FileKind::Image) {
       auto [axis, position] = slices[nextSlice++];
-      writeImage(out, withPrepared(*solid, lazy, [&](const SolidTexture& s) {
+      writeImage(out, withPrepared(*solid, [&](const SolidTexture& s) {
                    return sampleSlice(s, box, axis, position, args.resolution);
                  }));
     } else if (ext == "nrrd" || ext == "vdb") {
       VolumeWriteOptions volumeOptions;
       volumeOptions.floatSamples = args.floatVolume;
-      writeVolume(
-          out, withPrepared(*solid, lazy, [&](const SolidTexture& s) { return sampleVolume(s, box, args.resolution); }),
-          volumeOptions);
+      writeVolume(out,
+                  withPrepared(*solid, [&](const SolidTexture& s) { return sampleVolume(s, box, args.resolution); }),
+                  volumeOptions);
     } else {
       Mesh colored = mesh;
-      if (lazy) lazy->prepare(colored.positions);
+      solid->prepare(colored.positions);
       colorMeshVertices(colored, *solid);
       writeMesh(out, colored);
     }
@@ -237,27 +209,18 @@ void runSolid(const SolidArgs& args, const GlobalOptions& globals) {
     std::vector<std::pair<float, float>> views;
     for (int v = 0; v < args.views; ++v) views.push_back({30.0f + 90.0f * v, 20.0f});
     SurfaceColorFunction colorAt = surfaceColorFunction(*solid);
-    if (lazy)  // the renderer asks once per view for all visible points: prepare them first
-      colorAt = [lazy](const std::vector<Vec3f>& points, const std::vector<Vec3f>& normals,
-                       std::vector<Vec3f>& colors) {
-        lazy->prepare(points);
-        colors = lazy->evaluateColors(points, normals);
+    if (solid->preparesOnDemand())  // the renderer asks once per view for all visible points: prepare them first
+      colorAt = [&solid](const std::vector<Vec3f>& points, const std::vector<Vec3f>& normals,
+                         std::vector<Vec3f>& colors) {
+        solid->prepare(points);
+        colors = solid->evaluateColors(points, normals);
       };
     writeImage(args.render, renderViews(mesh, &colorAt, views, options));
     report["outputs"].push_back({{"file", args.render}, {"seconds", lap()}});
     progress->advance(1);
   }
   progress->end();
-  if (lazy) {
-    const LazySolid& synthesis = lazy->solid();
-    for (int l = 0; l < synthesis.levels(); ++l) {
-      const LazyLevelStats& st = synthesis.stats()[std::size_t(l)];
-      report["levels"].push_back({{"level", l},
-                                  {"voxels_synthesized", st.voxelsSynthesized},
-                                  {"corrections", st.corrections},
-                                  {"blocks_cached", st.blocksCached}});
-    }
-  }
+  if (!lazy.parts.empty()) report["lazy"] = lazyStats(lazy);
   if (!args.stats.empty()) writeFileAtomically(args.stats, report.dump(2) + "\n");
   if (globals.json)
     printJson(report);
@@ -284,7 +247,11 @@ Command registerSolidCommand(CLI::App& app, const GlobalOptions& globals) {
       "--mesh, .png .jpg .exr the next --slice, .nrrd .vdb the volume over the mesh's box (or the unit cube) at "
       "--resolution.");
   auto args = std::make_shared<SolidArgs>();
-  sub->add_option("EXEMPLAR", args->exemplar, "2D exemplar image, or a 3D exemplar volume (.nrrd)")->required();
+  sub->add_option("EXEMPLAR", args->exemplars,
+                  "2D exemplar image, or a 3D exemplar volume (.nrrd); lazy also takes three: XY YZ ZX (the planes' "
+                  "exemplars)")
+      ->required()
+      ->expected(1, 3);
   sub->add_option("--method", args->method, "Synthesis method")
       ->capture_default_str()
       ->check(CLI::IsMember({"tile-deform", "tile-blend", "lazy"}));
@@ -326,6 +293,12 @@ Command registerSolidCommand(CLI::App& app, const GlobalOptions& globals) {
       ->capture_default_str();
   addTileBlendOptions(*sub, args->tileSize, args->blendExponent);
   sub->add_option("--field", args->field, "lazy: rotation field (.tsfield from `texsynth field`) the texture follows");
+  sub->add_option("--inner", args->inner,
+                  "lazy with --mesh: exemplar for everything deeper than --shell below the surface (the paper's tree: "
+                  "bark outside, wood inside)");
+  sub->add_option("--shell", args->shell,
+                  "lazy with --inner: depth of the outer region, as a fraction of the mesh's bounding-box diagonal")
+      ->capture_default_str();
   sub->add_option("--levels", args->levels, "lazy: pyramid levels L")->capture_default_str()->check(CLI::Range(1, 8));
   sub->add_option("--passes", args->passes, "lazy: correction passes per level (8 subpasses each)")
       ->capture_default_str()

@@ -137,3 +137,24 @@ TEST(SolidCli, OutputsAreCheckedBeforeAnyWork) {
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_NE(r.err.find("missing.png"), std::string::npos);
 }
+
+TEST(SolidCli, LazyWritesASliceAndRejectsWhatItCannotDo) {
+  test::TempDir dir;
+  std::string exemplar = writeExemplar(dir);
+  const std::string lazy = "solid " + exemplar + " --method lazy --levels 2 --passes 1 --tiles 0.25 ";
+  RunResult r = runTexsynth(lazy + "--slice z=0.5 --resolution 12 -o " + dir.file("s.png") + " --stats " +
+                                dir.file("stats.json") + " --quiet",
+                            dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(readImage(dir.file("s.png")).width, 12);
+  auto stats = nlohmann::json::parse(readFileBytes(dir.file("stats.json")));
+  ASSERT_EQ(stats["lazy"].size(), 1u);
+  EXPECT_GT(stats["lazy"][0]["levels"][1]["corrections"].get<std::int64_t>(), 0);
+  const std::string out = " --slice z=0.5 -o " + dir.file("x.png");
+  test::expectOneLineError(runTexsynth(lazy + exemplar + out, dir), 2, "EXEMPLAR");  // two exemplars
+  test::expectOneLineError(runTexsynth(lazy + "--inner " + exemplar + out, dir), 2, "--inner");
+  test::expectOneLineError(
+      runTexsynth("solid " + exemplar + " " + exemplar + " " + exemplar + " --method tile-blend" + out, dir), 2,
+      "EXEMPLAR");
+  EXPECT_FALSE(std::filesystem::exists(dir.file("x.png")));
+}

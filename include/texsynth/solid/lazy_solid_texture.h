@@ -22,7 +22,8 @@ class LazySolidTexture : public SolidTexture {
 
   // Synthesizes (or finds cached) every voxel the points fall in. Throws ParameterError
   // ("points", ...) for non-finite points or points too far from the placement origin.
-  void prepare(std::span<const Vec3f> points, Progress& progress = noProgress());
+  void prepare(std::span<const Vec3f> points, Progress& progress = noProgress()) override;
+  bool preparesOnDemand() const override { return true; }
   // The finest voxel of a point.
   Vec3i voxelOf(const Vec3f& point) const;
 

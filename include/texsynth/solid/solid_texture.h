@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "texsynth/core/math.h"
+#include "texsynth/core/progress.h"
 
 namespace texsynth {
 
@@ -48,6 +49,14 @@ class SolidTexture {
   // results never depend on batch split, order or thread count.
   virtual void evaluateSerial(std::span<const Vec3f> points, std::span<const Vec3f> normals,
                               std::span<float> values) const = 0;
+
+  // Methods that synthesize on demand (lazy synthesis) compute here what `points` need, before
+  // they are evaluated; the others need nothing and do nothing.
+  virtual void prepare(std::span<const Vec3f> points, Progress& progress = noProgress()) {
+    (void)points, (void)progress;
+  }
+  // True if evaluate() needs prepare() first.
+  virtual bool preparesOnDemand() const { return false; }
 
   // evaluateSerial in parallel over fixed chunks of points. Throws ParameterError
   // ("normals" | "values") when the span sizes do not match.

@@ -1,0 +1,46 @@
+#pragma once
+// The flags of `texsynth solid`, and the lazy method's construction (solid_lazy.cpp).
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "cli_common.h"
+#include "texsynth/core/mesh.h"
+#include "texsynth/solid/lazy_solid.h"
+#include "texsynth/solid/solid_texture.h"
+
+namespace texsynth::cli {
+
+struct SolidArgs {
+  std::vector<std::string> exemplars;  // EXEMPLAR [YZ_EXEMPLAR ZX_EXEMPLAR]
+  std::string method = "tile-deform", mesh, render, stats, stack = "xyz";
+  std::vector<std::string> outputs, slices;
+  int resolution = 128, renderSize = 768, views = 2;
+  float tiles = 2.0f, sharpness = 4.0f;
+  bool floatVolume = false;
+  // tile-deform
+  std::string cell = "0", lambda = "0.4";
+  float clamp = 0.45f, noiseScale = 2.5f;
+  // tile-blend
+  float tileSize = 0, blendExponent = 2.0f;
+  // lazy
+  std::string field, inner;
+  int levels = 4, passes = 2;
+  float shell = 0.05f;
+};
+
+// --method lazy: one LazySolid on the exemplars (one for all planes, or XY YZ ZX), guided by
+// --field if given; with --inner and a mesh, a second one fills everything deeper than --shell
+// (a fraction of the mesh's bounding-box diagonal) below the surface.
+struct LazyBuild {
+  std::unique_ptr<SolidTexture> texture;
+  std::vector<std::pair<std::string, std::shared_ptr<LazySolid>>> parts;  // name, synthesis
+};
+LazyBuild makeLazySolid(const SolidArgs& args, const Mesh& mesh, const SolidPlacement& placement, std::uint64_t seed,
+                        nlohmann::json& report);
+
+// Per-level work of every lazy part, for --stats.
+nlohmann::json lazyStats(const LazyBuild& build);
+
+}  // namespace texsynth::cli

@@ -1,0 +1,84 @@
+// texsynth solid --method lazy: building the lazy synthesis (exemplars, field, regions) and
+// reporting its work.
+#include <cmath>
+
+#include "solid_args.h"
+#include "texsynth/field/field_io.h"
+#include "texsynth/io/image_io.h"
+#include "texsynth/solid/lazy_field.h"
+#include "texsynth/solid/lazy_solid_texture.h"
+#include "texsynth/solid/region_solid.h"
+
+namespace texsynth::cli {
+
+using nlohmann::json;
+
+namespace {
+
+// One LazySolid on one exemplar (all planes) or three (XY YZ ZX).
+std::shared_ptr<LazySolid> makeSynthesis(const std::vector<std::string>& exemplars, const LazySolidOptions& options,
+                                         const LazyOrientation& orientation) {
+  if (exemplars.size() == 2)
+    throw ParameterError("EXEMPLAR", "give one exemplar for all three planes, or three: XY YZ ZX");
+  if (exemplars.size() == 1) return std::make_shared<LazySolid>(readImage(exemplars[0]), options, orientation);
+  return std::make_shared<LazySolid>(readImage(exemplars[0]), readImage(exemplars[1]), readImage(exemplars[2]), options,
+                                     orientation);
+}
+
+}  // namespace
+
+LazyBuild makeLazySolid(const SolidArgs& args, const Mesh& mesh, const SolidPlacement& placement, std::uint64_t seed,
+                        json& report) {
+  LazySolidOptions options;
+  options.levels = args.levels;
+  options.passes = args.passes;
+  options.seed = seed;
+  options.cacheDirectory = defaultCacheDirectory();
+  LazyOrientation orientation;
+  if (!args.field.empty()) {
+    orientation = lazyOrientationFromField(readField(args.field).rotations, placement, options.levels);
+    report["field"] = args.field;
+  }
+  report["variant"] = args.field.empty() ? "lazy, identity field" : "lazy, guided by --field";
+
+  LazyBuild build;
+  auto outer = makeSynthesis(args.exemplars, options, orientation);
+  build.parts.push_back({"shell", outer});
+  auto outerTexture = std::make_shared<LazySolidTexture>(outer, placement);
+  if (args.inner.empty()) {
+    build.texture = std::make_unique<LazySolidTexture>(outer, placement);
+    return build;
+  }
+  if (mesh.positions.empty()) throw ParameterError("--inner", "needs --mesh: the regions are depths below its surface");
+  if (!std::isfinite(args.shell) || !(args.shell > 0 && args.shell < 1))
+    throw ParameterError("--shell",
+                         "must be a fraction in (0, 1) of the mesh's diagonal, got " + std::to_string(args.shell));
+  LazySolidOptions innerOptions = options;
+  innerOptions.seed = seed ^ 0x1a2b3c4d5e6fULL;  // independent of the shell's synthesis
+  auto inner = makeSynthesis({args.inner}, innerOptions, orientation);
+  build.parts.push_back({"core", inner});
+  const float depth = args.shell * mesh.bounds().size().norm();
+  report["shell_depth"] = depth;
+  build.texture = std::make_unique<RegionSolidTexture>(
+      std::vector<std::shared_ptr<SolidTexture>>{outerTexture, std::make_shared<LazySolidTexture>(inner, placement)},
+      surfaceShellRule(mesh, depth));
+  return build;
+}
+
+json lazyStats(const LazyBuild& build) {
+  json parts = json::array();
+  for (const auto& [name, synthesis] : build.parts) {
+    json levels = json::array();
+    for (int l = 0; l < synthesis->levels(); ++l) {
+      const LazyLevelStats& st = synthesis->stats()[std::size_t(l)];
+      levels.push_back({{"level", l},
+                        {"voxels_synthesized", st.voxelsSynthesized},
+                        {"corrections", st.corrections},
+                        {"blocks_cached", st.blocksCached}});
+    }
+    parts.push_back({{"region", name}, {"levels", levels}});
+  }
+  return parts;
+}
+
+}  // namespace texsynth::cli
