@@ -13,6 +13,7 @@
 #include "texsynth/io/volume_io.h"
 #include "texsynth/render/render_mesh.h"
 #include "texsynth/solid/solid_consumers.h"
+#include "texsynth/solid/surface_voxels.h"
 #include "texsynth/solid/tile_blend_solid.h"
 #include "texsynth/solid/tile_deform_solid.h"
 
@@ -99,8 +100,9 @@ void checkOutputs(const SolidArgs& args) {
                                         std::to_string(imageOutputs) +
                                         " image output(s): give one -o image per --slice, in order");
   if (!args.render.empty() && args.mesh.empty()) throw ParameterError("--render", "needs --mesh");
-  if (args.outputs.empty() && args.render.empty())
-    throw ParameterError("--output", "nothing to write: give -o (mesh, slice or volume) or --render");
+  if (args.surface > 0 && args.mesh.empty()) throw ParameterError("--surface", "needs --mesh");
+  if (args.outputs.empty() && args.render.empty() && args.surface == 0)
+    throw ParameterError("--output", "nothing to write: give -o (mesh, slice or volume), --render or --surface");
 }
 
 std::unique_ptr<SolidTexture> makeSolid(const SolidArgs& args, const Mesh& mesh, const Box3f& box, std::uint64_t seed,
@@ -177,6 +179,16 @@ void runSolid(const SolidArgs& args, const GlobalOptions& globals) {
   LazyBuild lazy;
   std::unique_ptr<SolidTexture> solid = makeSolid(args, mesh, box, globals.seed, report, lazy);
   report["setup_seconds"] = lap();
+  if (args.surface > 0) {  // the whole surface at a resolution: synthesized and evaluated, for timing
+    std::vector<Vec3f> points = surfaceVoxelCenters(mesh, box, args.surface);
+    solid->prepare(points);
+    const double prepared = lap();
+    solid->evaluateColors(points);
+    report["surface"] = {{"resolution", args.surface},
+                         {"voxels", points.size()},
+                         {"synthesis_seconds", prepared},
+                         {"lookup_seconds", lap()}};
+  }
 
   auto progress = makeProgress(globals);
   progress->begin("solid outputs", std::int64_t(args.outputs.size() + (args.render.empty() ? 0 : 1)));
@@ -263,6 +275,10 @@ Command registerSolidCommand(CLI::App& app, const GlobalOptions& globals) {
   sub->add_option("--slice", args->slices, "AXIS=POSITION in [0,1] across the box, e.g. z=0.5 (one image -o each)");
   sub->add_option("--resolution", args->resolution, "Voxels along the box's longest side, for slices and volumes")
       ->capture_default_str()
+      ->check(CLI::Range(1, 4096));
+  sub->add_option("--surface", args->surface,
+                  "Synthesize the whole --mesh surface at this resolution (every voxel it passes through, voxels as "
+                  "for --resolution) and report the time and voxel count in --stats / --json")
       ->check(CLI::Range(1, 4096));
   sub->add_option("--render", args->render, "Render the textured --mesh (colors evaluated per pixel) to this image");
   sub->add_option("--render-size", args->renderSize, "Size of each rendered view")

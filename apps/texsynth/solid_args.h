@@ -16,7 +16,7 @@ struct SolidArgs {
   std::vector<std::string> exemplars;  // EXEMPLAR [YZ_EXEMPLAR ZX_EXEMPLAR]
   std::string method = "tile-deform", mesh, render, stats, stack = "xyz";
   std::vector<std::string> outputs, slices;
-  int resolution = 128, renderSize = 768, views = 2;
+  int resolution = 128, renderSize = 768, views = 2, surface = 0;
   float tiles = 2.0f, sharpness = 4.0f;
   bool floatVolume = false;
   // tile-deform
