@@ -2,10 +2,15 @@
 // in the planes of its local frame (nearest voxel), projects each with that plane's PCA, and
 // takes among the candidate triples proposed by its in-plane neighbours (the paper's reduced
 // S(v)) the one whose three exemplar neighbourhoods are nearest, summed over the planes. A step
-// reads only the state before it (double buffering), so results never depend on scheduling.
+// computes all its results from the state before it, then writes them, so results never depend
+// on scheduling. Per voxel, each distinct candidate triple is measured once, and a cheap
+// vectorized bound rejects most of them before the exact (ordered) distance.
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 #include "texsynth/core/error.h"
 #include "texsynth/core/parallel.h"
@@ -35,32 +40,68 @@ Vec3i roundVector(const Vec3f& v) {
 // The 3x3 in-plane offsets with (0,0) first: a voxel's own proposals win ties.
 constexpr int kOffsets[9][2] = {{0, 0}, {-1, -1}, {0, -1}, {1, -1}, {-1, 0}, {1, 0}, {-1, 1}, {0, 1}, {1, 1}};
 
-// Reads voxels of `before` around one block through a table of the neighbouring blocks.
+// The blocks around one block whose state before a step may be read, as a dense table.
 class BlockNeighborhood {
  public:
-  BlockNeighborhood(const WorkSet& before, const Vec3i& block, int radius)
-      : span_((kB - 1 + radius) / kB), side_(2 * span_ + 1), base_(block) {
+  BlockNeighborhood(const WorkSet& set, const Vec3i& block, int radius, int step)
+      : span_((kB - 1 + radius) / kB), side_(2 * span_ + 1) {
     table_.resize(std::size_t(side_) * side_ * side_);
     for (int z = 0; z < side_; ++z)
       for (int y = 0; y < side_; ++y)
-        for (int x = 0; x < side_; ++x)
+        for (int x = 0; x < side_; ++x) {
+          const std::int32_t i =
+              set.indexOf(blockKey(block.x() + x - span_, block.y() + y - span_, block.z() + z - span_));
           table_[std::size_t((z * side_ + y) * side_ + x)] =
-              before.find(blockKey(block.x() + x - span_, block.y() + y - span_, block.z() + z - span_));
+              i >= 0 && set.lastLayer[std::size_t(i)] >= step - 1 ? &set.blocks[std::size_t(i)] : nullptr;
+        }
   }
-  // The block and slot of voxel u (absolute); it must be within the radius.
-  std::pair<const WorkBlock*, int> at(const Vec3i& u) const {
-    const Vec3i b(floorDiv(u.x(), kB), floorDiv(u.y(), kB), floorDiv(u.z(), kB));
-    const Vec3i t = b - base_ + Vec3i::Constant(span_);
-    const WorkBlock* block = table_[std::size_t((t.z() * side_ + t.y()) * side_ + t.x())];
-    TS_CHECK_MSG(block != nullptr, "lazy correction read a voxel outside its planned region");
-    const Vec3i local = u - b * kB;
-    return {block, (local.z() * kB + local.y()) * kB + local.x()};
+  // Voxel at `offset` from the voxel at `local` (0..kB-1 per axis) of the centre block, as
+  // table index * kBlockVoxels + slot; -1 if its block may not be read.
+  int locate(const Vec3i& local, const Vec3i& offset) const {
+    const Vec3i u = local + offset + Vec3i::Constant(span_ * kB);  // >= 0 within the radius
+    const int t = ((u.z() / kB) * side_ + u.y() / kB) * side_ + u.x() / kB;
+    if (table_[std::size_t(t)] == nullptr) return -1;
+    return t * kBlockVoxels + ((u.z() % kB) * kB + u.y() % kB) * kB + u.x() % kB;
   }
+  const WorkBlock& block(int located) const { return *table_[std::size_t(located / kBlockVoxels)]; }
 
  private:
   int span_, side_;
-  Vec3i base_;
   std::vector<const WorkBlock*> table_;
+};
+
+// Open-addressing set of the triples already measured for one voxel (a generation stamp
+// clears it in O(1)): coherent neighbours propose the same triples over and over.
+class TripleSet {
+ public:
+  // Returns true if `t` was not in the set (and inserts it).
+  bool insert(const CoordinateTriple& t) {
+    std::uint32_t h =
+        (std::uint32_t(t.xy) * 0x9E3779B1u) ^ (std::uint32_t(t.yz) * 0x85EBCA77u) ^ (std::uint32_t(t.zx) * 0xC2B2AE3Du);
+    for (h = (h ^ (h >> 15)) & kMask;; h = (h + 1) & kMask) {
+      Entry& e = entries_[h];
+      if (e.stamp != stamp_) {
+        e = {t, stamp_};
+        return true;
+      }
+      if (e.triple == t) return false;
+    }
+  }
+  void clear() {
+    if (++stamp_ == 0) {
+      for (Entry& e : entries_) e.stamp = 0;
+      stamp_ = 1;
+    }
+  }
+
+ private:
+  static constexpr std::uint32_t kSize = 1024, kMask = kSize - 1;  // > 27 * 64 / 2 + 1 entries
+  struct Entry {
+    CoordinateTriple triple;
+    std::uint32_t stamp = 0;
+  };
+  std::array<Entry, kSize> entries_{};
+  std::uint32_t stamp_ = 1;
 };
 
 class VoxelCorrector {
@@ -70,52 +111,106 @@ class VoxelCorrector {
       TS_CHECK(ctx.planes[p]->pca.inputDimension == n_ * n_ * ctx.channels);
       query_[p].resize(std::size_t(ctx.planes[p]->pca.outputDimension));
     }
+    TS_CHECK(ctx.triples->count <= 64);
     buffer_.resize(std::size_t(n_) * n_ * ctx.channels);
+    offsets_.resize(std::size_t(3 * (n_ * n_ + 9)));
+    located_.resize(offsets_.size());
   }
 
-  // The corrected triple of voxel v (slot `slot` of `self`).
-  CoordinateTriple correct(const BlockNeighborhood& around, const WorkBlock& self, int slot, const Vec3i& v) {
-    const Mat3f& frame = self.frames[std::size_t(slot)];
-    const int c = ctx_.channels;
+  // Corrects voxel `slot` of `self` (the centre block of `around`) into `out`; false (and `out`
+  // untouched) if it would read a block that may not be read.
+  bool correct(const BlockNeighborhood& around, const WorkBlock& self, int slot, CoordinateTriple& out) {
+    setOffsets(self.frames[std::size_t(slot)]);
+    const Vec3i local(slot % kB, slot / kB % kB, slot / (kB * kB));
+    for (std::size_t i = 0; i < offsets_.size(); ++i)
+      if ((located_[i] = around.locate(local, offsets_[i])) < 0) return false;
+
+    const int c = ctx_.channels, taps = n_ * n_;
     for (int p = 0; p < 3; ++p) {
       float* write = buffer_.data();
-      for (int b = -r_; b <= r_; ++b)
-        for (int a = -r_; a <= r_; ++a) {
-          const auto [block, s] = around.at(v + roundVector(frame * planeOffset(p, a, b)));
-          const float* color = block->colors.data() + std::size_t(s) * kMaxChannels;
-          write = std::copy(color, color + c, write);
-        }
+      for (int k = 0; k < taps; ++k) {
+        const int at = located_[std::size_t(p * taps + k)];
+        const float* color = around.block(at).colors.data() + std::size_t(at % kBlockVoxels) * kMaxChannels;
+        for (int i = 0; i < c; ++i) *write++ = color[i];  // c is small: no memmove call
+      }
       ctx_.planes[p]->pca.project(buffer_.data(), query_[p].data());
     }
     const CoordinateTriple current = self.triples[std::size_t(slot)];
     CoordinateTriple best = current;
     float bestDistance = distance(current, std::numeric_limits<float>::infinity());
+    seen_.clear();
+    seen_.insert(current);
     const CandidateTriples& candidates = *ctx_.triples;
     for (int p = 0; p < 3; ++p) {
       std::int32_t proposed[9];
       int proposals = 0;
-      for (const auto& d : kOffsets) {
-        const auto [block, s] = around.at(v + roundVector(frame * planeOffset(p, d[0], d[1])));
-        const std::int32_t pixel = component(block->triples[std::size_t(s)], p);
+      for (int k = 0; k < 9; ++k) {
+        const int at = located_[std::size_t(3 * taps + p * 9 + k)];
+        const std::int32_t pixel = component(around.block(at).triples[std::size_t(at % kBlockVoxels)], p);
         // [T_P(v + d) - h P(d)]: the in-plane offset is (a, b) in the plane's (u, v).
-        const int u = wrapIndex(std::int64_t(pixel % ctx_.width) - ctx_.spacing * d[0], ctx_.width);
-        const int w = wrapIndex(std::int64_t(pixel / ctx_.width) - ctx_.spacing * d[1], ctx_.height);
+        const int u = wrapIndex(std::int64_t(pixel % ctx_.width) - ctx_.spacing * kOffsets[k][0], ctx_.width);
+        const int w = wrapIndex(std::int64_t(pixel / ctx_.width) - ctx_.spacing * kOffsets[k][1], ctx_.height);
         const std::int32_t source = w * ctx_.width + u;
         if (std::find(proposed, proposed + proposals, source) != proposed + proposals) continue;
         proposed[proposals++] = source;
         const CoordinateTriple* triples = candidates.at(Plane(p), source);
         const float* errors = candidates.errorsAt(Plane(p), source);
-        for (int k = 0; k < candidates.count; ++k) {
-          if (!std::isfinite(errors[k])) continue;
-          const float dist = distance(triples[k], bestDistance);
-          if (dist < bestDistance) bestDistance = dist, best = triples[k];
+        for (int j = 0; j < candidates.count; ++j) {
+          // A triple seen before cannot win now: it lost (or tied) against a best no worse.
+          if (!std::isfinite(errors[j]) || !seen_.insert(triples[j])) continue;
+          if (surelyNotBelow(triples[j], bestDistance)) continue;
+          const float dist = distance(triples[j], bestDistance);
+          if (dist < bestDistance) bestDistance = dist, best = triples[j];
         }
       }
     }
-    return best;
+    out = best;
+    return true;
   }
 
  private:
+  // The rounded read offsets of a voxel with this frame: 3 planes x N^2 neighbourhood taps, then
+  // 3 planes x 9 candidate sources. Recomputed only when the frame changes (never for a constant field).
+  void setOffsets(const Mat3f& frame) {
+    if (valid_ && frame == frame_) return;
+    frame_ = frame;
+    valid_ = true;
+    std::size_t i = 0;
+    for (int p = 0; p < 3; ++p)
+      for (int b = -r_; b <= r_; ++b)
+        for (int a = -r_; a <= r_; ++a) offsets_[i++] = roundVector(frame * planeOffset(p, a, b));
+    for (int p = 0; p < 3; ++p)
+      for (const auto& d : kOffsets) offsets_[i++] = roundVector(frame * planeOffset(p, d[0], d[1]));
+  }
+
+  // A quick test that distance(t) >= bound, summing in 8 lanes (vectorized). Both sums of these
+  // <= 60 non-negative terms are within 60 ulp-sized relative errors of the exact one, so
+  // lanes * (1 - 1e-4) >= bound implies the ordered sum >= bound: results stay bit-identical
+  // and the ordered sum runs only for the few candidates near the best.
+  bool surelyNotBelow(const CoordinateTriple& t, float bound) const {
+    float lanes[8] = {}, tail = 0;
+    for (int p = 0; p < 3; ++p) {
+      const ExemplarLevel& level = *ctx_.planes[p];
+      const float* target = level.projectedAt(component(t, p));
+      const float* query = query_[p].data();
+      const int dims = level.pca.outputDimension;
+      int i = 0;
+      for (; i + 8 <= dims; i += 8)
+        for (int j = 0; j < 8; ++j) {
+          const float d = query[i + j] - target[i + j];
+          lanes[j] += d * d;
+        }
+      for (; i < dims; ++i) {
+        const float d = query[i] - target[i];
+        tail += d * d;
+      }
+      const float sum =
+          ((lanes[0] + lanes[4]) + (lanes[1] + lanes[5])) + ((lanes[2] + lanes[6]) + (lanes[3] + lanes[7])) + tail;
+      if (sum * (1.0f - 1e-4f) >= bound) return true;
+    }
+    return false;
+  }
+
   // Sum over the planes of the squared PCA distance; stops early once past `bound`.
   float distance(const CoordinateTriple& t, float bound) const {
     float sum = 0;
@@ -135,35 +230,52 @@ class VoxelCorrector {
   const LevelContext& ctx_;
   int n_, r_;
   std::vector<float> buffer_, query_[3];
+  std::vector<Vec3i> offsets_;
+  std::vector<int> located_;
+  Mat3f frame_;
+  bool valid_ = false;
+  TripleSet seen_;
 };
 
 }  // namespace
 
-std::int64_t correctStep(const LevelContext& ctx, const WorkSet& before, WorkSet& after, int s, int voxelClass) {
+std::int64_t correctStep(const LevelContext& ctx, WorkSet& set, int step, int s, int voxelClass) {
   const int radius = ctx.readRadius();
-  std::vector<std::int64_t> counts(after.keys.size(), 0);
-  parallelForChunks(0, std::int64_t(after.keys.size()), kBlocksPerChunk, [&](std::int64_t begin, std::int64_t end) {
-    VoxelCorrector corrector(ctx);
+  std::vector<std::int32_t> targets;
+  for (std::size_t i = 0; i < set.keys.size(); ++i)
+    if (set.lastLayer[i] >= step) targets.push_back(std::int32_t(i));
+  // Results first (reading only the state before the step), then written back.
+  std::vector<CoordinateTriple> results(targets.size() * kBlockVoxels);
+  std::vector<std::uint64_t> corrected(targets.size(), 0);  // bit per slot
+  parallelForChunks(0, std::int64_t(targets.size()), kBlocksPerChunk, [&](std::int64_t begin, std::int64_t end) {
+    auto corrector = std::make_unique<VoxelCorrector>(ctx);
     for (std::int64_t i = begin; i < end; ++i) {
-      WorkBlock& out = after.blocks[std::size_t(i)];
-      const WorkBlock* in = before.find(after.keys[std::size_t(i)]);
-      TS_CHECK(in != nullptr);
-      out = *in;
-      const BlockNeighborhood around(before, blockIndex(after.keys[std::size_t(i)]), radius);
+      const std::size_t index = std::size_t(targets[std::size_t(i)]);
+      const WorkBlock& in = set.blocks[index];
+      const BlockNeighborhood around(set, blockIndex(set.keys[index]), radius, step);
       for (int slot = 0; slot < kBlockVoxels; ++slot) {
-        const Vec3i v = out.origin + Vec3i(slot % kB, slot / kB % kB, slot / (kB * kB));
+        const Vec3i v = in.origin + Vec3i(slot % kB, slot / kB % kB, slot / (kB * kB));
         if (voxelClass >= 0 &&
             (wrapIndex(v.x(), s) | wrapIndex(v.y(), s) << 1 | wrapIndex(v.z(), s) << 2) != voxelClass)
           continue;
-        const CoordinateTriple t = corrector.correct(around, *in, slot, v);
+        if (corrector->correct(around, in, slot, results[std::size_t(i) * kBlockVoxels + std::size_t(slot)]))
+          corrected[std::size_t(i)] |= std::uint64_t(1) << slot;
+      }
+    }
+  });
+  parallelForChunks(0, std::int64_t(targets.size()), kBlocksPerChunk, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t i = begin; i < end; ++i) {
+      WorkBlock& out = set.blocks[std::size_t(targets[std::size_t(i)])];
+      for (int slot = 0; slot < kBlockVoxels; ++slot) {
+        if (!(corrected[std::size_t(i)] >> slot & 1)) continue;
+        const CoordinateTriple t = results[std::size_t(i) * kBlockVoxels + std::size_t(slot)];
         out.triples[std::size_t(slot)] = t;
         ctx.color(t, out.colors.data() + std::size_t(slot) * kMaxChannels);
-        ++counts[std::size_t(i)];
       }
     }
   });
   std::int64_t total = 0;
-  for (std::int64_t c : counts) total += c;
+  for (std::uint64_t bits : corrected) total += std::popcount(bits);
   return total;
 }
 

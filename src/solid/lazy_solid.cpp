@@ -174,7 +174,9 @@ LevelContext LazySolid::context(int level) const {
 void LazySolid::synthesizeBlocks(std::vector<BlockKey> blocks, Progress& progress) {
   const int levels = options_.levels;
   const std::vector<int> classes = subpassClasses(options_.subpassGrid);
-  const int steps = options_.passes * int(classes.size());
+  std::vector<int> stepClasses;
+  for (int pass = 0; pass < options_.passes; ++pass)
+    stepClasses.insert(stepClasses.end(), classes.begin(), classes.end());
   std::sort(blocks.begin(), blocks.end());
   blocks.erase(std::unique(blocks.begin(), blocks.end()), blocks.end());
 
@@ -183,7 +185,7 @@ void LazySolid::synthesizeBlocks(std::vector<BlockKey> blocks, Progress& progres
   std::vector<BlockKey> deliver = std::move(blocks);
   removeCached(deliver, impl_->caches[std::size_t(levels - 1)]);
   for (int l = levels - 1; l >= 0 && !deliver.empty(); --l) {
-    plans[std::size_t(l)] = planLevel(deliver, steps, context(l).readRadius());
+    plans[std::size_t(l)] = planLevel(deliver, stepClasses, context(l).readRadius());
     if (l == 0) break;
     deliver = parentBlocks(plans[std::size_t(l)].layers.front());
     removeCached(deliver, impl_->caches[std::size_t(l - 1)]);
@@ -211,15 +213,13 @@ void LazySolid::synthesizeBlocks(std::vector<BlockKey> blocks, Progress& progres
     });
     LazyLevelStats& stats = stats_[std::size_t(l)];
     stats.voxelsSynthesized += std::int64_t(current.keys.size()) * kBlockVoxels;
-    int step = 0;
-    for (int pass = 0; pass < options_.passes; ++pass)
-      for (int voxelClass : classes) {
-        WorkSet next(plan.layers[std::size_t(++step)]);
-        stats.corrections += correctStep(ctx, current, next, options_.subpassGrid, voxelClass);
-        current = std::move(next);
-      }
+    for (std::size_t i = 1; i < plan.layers.size(); ++i)
+      for (BlockKey key : plan.layers[i]) current.lastLayer[std::size_t(current.indexOf(key))] = std::int32_t(i);
+    for (std::size_t i = 0; i < stepClasses.size(); ++i)
+      stats.corrections += correctStep(ctx, current, int(i) + 1, options_.subpassGrid, stepClasses[i]);
     BlockCache& cache = impl_->caches[std::size_t(l)];
-    for (std::size_t i = 0; i < current.keys.size(); ++i) cache.emplace(current.keys[i], current.blocks[i].triples);
+    for (BlockKey key : plan.layers.back())
+      cache.emplace(key, current.blocks[std::size_t(current.indexOf(key))].triples);
     stats.blocksCached = std::int64_t(cache.size());
     progress.advance(1);
   }
@@ -257,8 +257,17 @@ void LazySolid::color(const Vec3i& voxel, float* out) const {
   const float* b = analysis(Plane::YZ).levels.back().image.pixels.data();
   const float* c = analysis(Plane::ZX).levels.back().image.pixels.data();
   const std::size_t stride = std::size_t(analyses_[0].channels());
-  for (int i = 0; i < channels; ++i)
-    out[i] = (a[t.xy * stride + i] + b[t.yz * stride + i] + c[t.zx * stride + i]) * (1.0f / 3.0f);
+  const float* colors[3] = {a + t.xy * stride, b + t.yz * stride, c + t.zx * stride};
+  if (options_.colorRule == LazySolidOptions::ColorRule::Medoid) {
+    float spread[3] = {0, 0, 0};
+    for (int p = 0; p < 3; ++p)
+      for (int q = 0; q < 3; ++q)
+        for (int i = 0; i < channels; ++i) spread[p] += std::abs(colors[p][i] - colors[q][i]);
+    const int pick = spread[1] < spread[0] ? (spread[2] < spread[1] ? 2 : 1) : (spread[2] < spread[0] ? 2 : 0);
+    std::copy(colors[pick], colors[pick] + channels, out);
+    return;
+  }
+  for (int i = 0; i < channels; ++i) out[i] = (colors[0][i] + colors[1][i] + colors[2][i]) * (1.0f / 3.0f);
 }
 
 }  // namespace texsynth

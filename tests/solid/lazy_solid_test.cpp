@@ -4,12 +4,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "test_support.h"
 #include "texsynth/core/parallel.h"
 #include "texsynth/core/random.h"
 #include "texsynth/eval/metrics.h"
+#include "texsynth/solid/lazy_blocks.h"
 #include "texsynth/solid/lazy_field.h"
 #include "texsynth/solid/lazy_solid_texture.h"
 
@@ -70,6 +72,57 @@ TEST(LazySolid, RequestIndependentWithRotatedFieldAndSubpasses) {
   options.levels = 2;
   const Quatf q(Eigen::AngleAxisf(0.6f, Vec3f(1, 2, 0.5f).normalized()));
   expectRequestIndependent(options, constantOrientation(q), {-3, -10, -1}, {12, 11, 10});
+}
+
+// The plan grows each side by the exact reach of each subpass's class: R where the outermost
+// voxel has the class's parity, R - 1 where it does not.
+TEST(LazySolid, PlanGrowsEachSideByTheReachOfTheCorrectedClass) {
+  const std::vector<lazy::BlockKey> deliver = {lazy::blockKey(0, 0, 0)};
+  // Backwards: class 7 (odd x): low side 0 + 3, high side 0 + 4; class 0: 3 + 3, 4 + 3.
+  const lazy::LazyDependencyPlan plan = lazy::planLevel(deliver, {0, 7}, 4);
+  ASSERT_EQ(plan.layers.size(), 3u);
+  EXPECT_EQ(plan.layers[2], deliver);
+  EXPECT_EQ(plan.layers[1].size(), 27u);   // 1 block per side
+  EXPECT_EQ(plan.layers[0].size(), 125u);  // ceil(6 / 4) and ceil(7 / 4) blocks
+  EXPECT_EQ(plan.layers[0].front(), lazy::blockKey(-2, -2, -2));
+  EXPECT_EQ(lazy::planLevel(deliver, {-1, -1, -1}, 3).layers[0].size(), 7u * 7u * 7u);  // 9 voxels
+  // R = 1, odd voxels only: the low side (even voxel 0 outermost) never grows, the high side once.
+  const lazy::LazyDependencyPlan odd = lazy::planLevel(deliver, {7, 7, 7, 7}, 1);
+  EXPECT_EQ(odd.layers[0].size(), 8u);
+  EXPECT_EQ(odd.layers[0].front(), lazy::blockKey(0, 0, 0));
+}
+
+TEST(LazySolid, RequestIndependentWithSubpassesAndTwoPasses) {
+  LazySolidOptions options = fastOptions();
+  options.levels = 2;
+  options.neighborhoodSizes = {5, 3};  // N = 3: a side of the other parity does not grow at all
+  options.subpassGrid = 2;
+  expectRequestIndependent(options, {}, {-5, -11, -2}, {13, 12, 11});
+}
+
+TEST(LazySolid, MedoidColorIsTheExemplarColorClosestToTheOtherTwo) {
+  LazySolidOptions options = fastOptions();
+  options.levels = 2;
+  options.colorRule = LazySolidOptions::ColorRule::Medoid;
+  LazySolid solid(pattern(), options);
+  solid.synthesizeBox({0, 0, 0}, {4, 4, 4});
+  const Image& image = solid.analysis(Plane::XY).levels.back().image;
+  int differentFromMean = 0;
+  for (int i = 0; i < 64; ++i) {
+    const Vec3i v(i % 4, i / 4 % 4, i / 16);
+    const CoordinateTriple t = solid.triple(v, 1);
+    const float* c[3] = {&image.pixels[std::size_t(t.xy) * 3], &image.pixels[std::size_t(t.yz) * 3],
+                         &image.pixels[std::size_t(t.zx) * 3]};
+    float spread[3] = {0, 0, 0}, out[3];
+    for (int p = 0; p < 3; ++p)
+      for (int q = 0; q < 3; ++q)
+        for (int k = 0; k < 3; ++k) spread[p] += std::abs(c[p][k] - c[q][k]);
+    const int pick = int(std::min_element(spread, spread + 3) - spread);
+    solid.color(v, out);
+    for (int k = 0; k < 3; ++k) ASSERT_EQ(out[k], c[pick][k]);
+    differentFromMean += std::abs(out[0] - (c[0][0] + c[1][0] + c[2][0]) / 3.0f) > 1e-4f;
+  }
+  EXPECT_GT(differentFromMean, 0);
 }
 
 TEST(LazySolid, IndependentOfThreadCount) {

@@ -52,31 +52,37 @@ struct WorkBlock {
   std::array<Mat3f, kBlockVoxels> frames;  // columns: local axes in grid space
 };
 
-// A set of working blocks, sorted by key (fixed iteration order).
+// The working blocks of one level, sorted by key (fixed iteration order). Corrections update
+// them in place; lastLayer[i] is the last plan layer holding block i, so step i (reading the
+// state after step i - 1) may read block j only if lastLayer[j] >= i - 1 (older blocks are stale).
 struct WorkSet {
   std::vector<BlockKey> keys;
   std::vector<WorkBlock> blocks;
+  std::vector<std::int32_t> lastLayer;
   std::unordered_map<BlockKey, std::int32_t> index;
 
   explicit WorkSet(std::vector<BlockKey> sortedKeys);
-  const WorkBlock* find(BlockKey key) const {
+  std::int32_t indexOf(BlockKey key) const {
     auto it = index.find(key);
-    return it == index.end() ? nullptr : &blocks[std::size_t(it->second)];
+    return it == index.end() ? -1 : it->second;
   }
 };
 
 // One level's dependency plan under the standard pass/subpass scheme: layers[0] holds the
 // blocks to upsample (or initialize), layers[i] those every later step still needs after
-// correction step i, layers.back() the blocks the level must deliver. Each correction step
-// reads `readRadius` voxels around what it writes, so layer i-1 = layer i grown by that many
-// voxels (rounded up to blocks). Replacing this (history windows, dual grids) changes only here.
+// correction step i, layers.back() the blocks the level must deliver. Step i corrects only the
+// voxels of its class, each reading `readRadius` voxels around it, so the needed region grows by
+// readRadius - 1 on a side whose outermost voxel is of another class (s = 2). Reaches add up in
+// voxels per side and are rounded up to blocks once per layer; voxels of a layer's blocks outside
+// the exact region may read stale or missing data: they are never read by what is delivered.
+// Replacing this (history windows, dual grids) changes only here.
 struct LazyDependencyPlan {
   std::vector<std::vector<BlockKey>> layers;
 };
-LazyDependencyPlan planLevel(const std::vector<BlockKey>& deliver, int steps, int readRadius);
+// stepClasses: the voxel class of each correction step (-1 = all voxels, see correctStep).
+LazyDependencyPlan planLevel(const std::vector<BlockKey>& deliver, const std::vector<int>& stepClasses, int readRadius);
 // Sorted, unique parent blocks (the coarser level) of `blocks`: block b reads parents in b/2.
 std::vector<BlockKey> parentBlocks(const std::vector<BlockKey>& blocks);
-
 // Everything one level's kernels need.
 struct LevelContext {
   int level = 0, levels = 1;
@@ -104,9 +110,11 @@ void upsampleBlock(const LevelContext& ctx, const BlockCache& parents, WorkBlock
 // Frames and colours of a block whose triples are set.
 void finishBlock(const LevelContext& ctx, WorkBlock& block);
 
-// One correction step: every block of `after` (a subset of `before`'s) copies its voxels from
-// `before` and corrects those of class `voxelClass` (x mod s, y mod s, z mod s as bits 0..2;
-// -1 = all voxels) reading only `before`. Returns the number of corrected voxels.
-std::int64_t correctStep(const LevelContext& ctx, const WorkSet& before, WorkSet& after, int s, int voxelClass);
+// Correction step `step` (1-based) in place: every block with lastLayer >= step corrects its
+// voxels of class `voxelClass` (x mod s, y mod s, z mod s as bits 0..2; -1 = all voxels) from
+// the state before the step (all results are computed before any is written). Voxels that would
+// read a stale or missing block are left alone (they lie outside the exact planned region).
+// Returns the number of corrected voxels.
+std::int64_t correctStep(const LevelContext& ctx, WorkSet& set, int step, int s, int voxelClass);
 
 }  // namespace texsynth::lazy

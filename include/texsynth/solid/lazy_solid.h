@@ -54,6 +54,11 @@ struct LazySolidOptions {
   // floor(h_l * r * xi + 1/2) along each local axis (eq. 4), xi uniform in [-1, 1]^3. Like the
   // 2D engine's default, 0.4 only acts on the coarse levels (h >= 2). >= 0, finite.
   float jitter = 0.4f;
+  // Final colour of a voxel from the three exemplar pixels of its finest triple: their mean
+  // (each plane's texture contributes equally; soft where the three disagree) or their medoid
+  // (the one with the least L1 colour distance to the other two, a real exemplar colour).
+  enum class ColorRule { Mean, Medoid };
+  ColorRule colorRule = ColorRule::Mean;
   std::uint64_t seed = 1;
   // Directory of the exemplar-analysis and candidate-triple caches; empty = no disk cache.
   std::string cacheDirectory;
@@ -107,8 +112,8 @@ class LazySolid {
   bool ready(const Vec3i& voxel) const;
   // The triple of a synthesized voxel at `level` (finest = levels() - 1); TS_CHECK otherwise.
   CoordinateTriple triple(const Vec3i& voxel, int level) const;
-  // Colour of a synthesized finest voxel: the mean of the three exemplars' colours at its
-  // triple (colour channels only), so each plane's texture contributes equally. Throws
+  // Colour of a synthesized finest voxel from the three exemplars' colours at its triple (colour
+  // channels only), combined by options().colorRule. Throws
   // ParameterError("voxel", ...) if the voxel was never synthesized.
   void color(const Vec3i& voxel, float* out) const;
 
