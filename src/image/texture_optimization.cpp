@@ -86,21 +86,11 @@ SourceCoordinates startCoordinates(const TextureOptimizationOptions& options, in
 // finer level.
 Image upsampleColors(const Image& coarse, int width, int height) {
   Image fine(width, height, coarse.channels);
-  const float sx = float(coarse.width) / float(width), sy = float(coarse.height) / float(height);
+  const double sx = double(coarse.width) / width, sy = double(coarse.height) / height;
   parallelForChunks(0, fine.height, 8, [&](std::int64_t begin, std::int64_t end) {
     for (int y = int(begin); y < int(end); ++y)
-      for (int x = 0; x < fine.width; ++x) {
-        const float fx = (x + 0.5f) * sx - 0.5f, fy = (y + 0.5f) * sy - 0.5f;
-        const int x0 = int(std::floor(fx)), y0 = int(std::floor(fy));
-        const float tx = fx - x0, ty = fy - y0;
-        const float* c00 = coarse.pixel(wrapIndex(x0, coarse.width), wrapIndex(y0, coarse.height));
-        const float* c10 = coarse.pixel(wrapIndex(x0 + 1, coarse.width), wrapIndex(y0, coarse.height));
-        const float* c01 = coarse.pixel(wrapIndex(x0, coarse.width), wrapIndex(y0 + 1, coarse.height));
-        const float* c11 = coarse.pixel(wrapIndex(x0 + 1, coarse.width), wrapIndex(y0 + 1, coarse.height));
-        float* out = fine.pixel(x, y);
-        for (int c = 0; c < coarse.channels; ++c)
-          out[c] = (1 - ty) * ((1 - tx) * c00[c] + tx * c10[c]) + ty * ((1 - tx) * c01[c] + tx * c11[c]);
-      }
+      for (int x = 0; x < fine.width; ++x)
+        coarse.sampleBilinearWrapped((x + 0.5) * sx, (y + 0.5) * sy, fine.pixel(x, y));
   });
   return fine;
 }
