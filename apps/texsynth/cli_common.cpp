@@ -77,6 +77,15 @@ std::pair<float, float> parseFloatPair(const std::string& text, const std::strin
   return {a, parts.size() == 2 ? parseNumber<float>(parts[1], flag, text) : a};
 }
 
+std::pair<int, float> parseAxisPosition(const std::string& text, const std::string& flag, bool openInterval) {
+  if (text.size() < 3 || text[1] != '=' || (text[0] != 'x' && text[0] != 'y' && text[0] != 'z'))
+    throw ParameterError(flag, "'" + text + "': expected AXIS=POSITION, e.g. z=0.5");
+  const float position = parseNumber<float>(text.substr(2), flag, text);
+  if (openInterval ? !(position > 0 && position < 1) : !(position >= 0 && position <= 1))
+    throw ParameterError(flag, "'" + text + "': position must be in " + (openInterval ? "(0, 1)" : "[0, 1]"));
+  return {text[0] - 'x', position};
+}
+
 Window parseWindow(const std::string& text, const std::string& flag) {
   auto parts = splitCommas(text);
   if (parts.size() != 4) throw ParameterError(flag, "'" + text + "': expected X,Y,W,H");

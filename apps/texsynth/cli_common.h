@@ -39,6 +39,10 @@ Size2 parseSize(const std::string& text, const std::string& flag);
 // "A" or "A,B" (B defaults to A), each a finite number. Throws ParameterError naming `flag`.
 std::pair<float, float> parseFloatPair(const std::string& text, const std::string& flag);
 
+// "z=0.5" -> (axis 2, 0.5): a plane across a box, for --slice (position in [0, 1]) and --cut
+// (openInterval: in (0, 1)). Throws ParameterError naming `flag`.
+std::pair<int, float> parseAxisPosition(const std::string& text, const std::string& flag, bool openInterval);
+
 // "X,Y,W,H": a window of an infinite texture (X, Y may be negative; W, H in 1..65536).
 struct Window {
   std::int64_t x = 0, y = 0;

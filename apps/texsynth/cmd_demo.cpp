@@ -70,7 +70,7 @@ Image stackPicture(const ExemplarAnalysis& analysis) {
     stack.push_back(level.image.channelRange(0, analysis.colorChannels));
     pca.push_back(pcaPicture(level));
   }
-  Image top = sideBySide(stack), bottom = sideBySide(pca);
+  Image top = sideBySide(stack, 4), bottom = sideBySide(pca, 4);
   Image out(top.width, top.height + bottom.height, 3, 1.0f);
   pasteImage(out, top, 0, 0);
   pasteImage(out, bottom, 0, top.height);

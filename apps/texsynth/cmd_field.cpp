@@ -19,18 +19,7 @@ namespace {
 // "z=0.5" -> (2, 0.5); "none" -> (-1, 0).
 std::pair<int, float> parseCut(const std::string& text) {
   if (text == "none") return {-1, 0.0f};
-  if (text.size() < 3 || text[1] != '=' || (text[0] != 'x' && text[0] != 'y' && text[0] != 'z'))
-    throw ParameterError("--cut", "must be AXIS=FRACTION (e.g. z=0.5) or none, got '" + text + "'");
-  float fraction = 0;
-  try {
-    std::size_t used = 0;
-    fraction = std::stof(text.substr(2), &used);
-    if (used != text.size() - 2) throw std::invalid_argument("trailing");
-  } catch (const std::exception&) {
-    throw ParameterError("--cut", "fraction in '" + text + "' is not a number");
-  }
-  if (!(fraction > 0 && fraction < 1)) throw ParameterError("--cut", "fraction must be in (0, 1), got '" + text + "'");
-  return {text[0] - 'x', fraction};
+  return parseAxisPosition(text, "--cut", true);
 }
 
 }  // namespace

@@ -7,10 +7,12 @@
 
 #include "solid_args.h"
 #include "texsynth/core/atomic_file.h"
+#include "texsynth/field/mesh_cut.h"
 #include "texsynth/io/file_kind.h"
 #include "texsynth/io/image_io.h"
 #include "texsynth/io/mesh_io.h"
 #include "texsynth/io/volume_io.h"
+#include "texsynth/render/glyph_mesh.h"
 #include "texsynth/render/render_mesh.h"
 #include "texsynth/solid/solid_consumers.h"
 #include "texsynth/solid/surface_voxels.h"
@@ -55,14 +57,6 @@ auto withPrepared(SolidTexture& solid, Consume consume) {
   return consume(static_cast<const SolidTexture&>(solid));
 }
 
-// "z=0.5" -> (axis 2, 0.5).
-std::pair<int, float> parseSlice(const std::string& text) {
-  if (text.size() < 3 || text[1] != '=' || std::string("xyz").find(text[0]) == std::string::npos)
-    throw ParameterError("--slice", "'" + text + "': expected AXIS=POSITION, e.g. z=0.5");
-  float position = parseFloatPair(text.substr(2), "--slice").first;
-  if (position < 0 || position > 1) throw ParameterError("--slice", "'" + text + "': position must be in [0, 1]");
-  return {int(std::string("xyz").find(text[0])), position};
-}
 
 // Three comma-separated values, or one for all three axes.
 Vec3f parseVec3(const std::string& text, const std::string& flag) {
@@ -100,6 +94,10 @@ void checkOutputs(const SolidArgs& args) {
                                         std::to_string(imageOutputs) +
                                         " image output(s): give one -o image per --slice, in order");
   if (!args.render.empty() && args.mesh.empty()) throw ParameterError("--render", "needs --mesh");
+  if (!args.cut.empty()) {
+    if (args.render.empty()) throw ParameterError("--cut", "is a view of --render: give --render too");
+    parseAxisPosition(args.cut, "--cut", true);
+  }
   if (args.surface > 0 && args.mesh.empty()) throw ParameterError("--surface", "needs --mesh");
   if (args.outputs.empty() && args.render.empty() && args.surface == 0)
     throw ParameterError("--output", "nothing to write: give -o (mesh, slice or volume), --render or --surface");
@@ -126,6 +124,8 @@ std::unique_ptr<SolidTexture> makeSolid(const SolidArgs& args, const Mesh& mesh,
     throw ParameterError("EXEMPLAR", "only --method lazy takes three exemplars (XY YZ ZX)");
   if (!args.inner.empty()) throw ParameterError("--inner", "only --method lazy fills regions");
   if (!args.field.empty()) throw ParameterError("--field", "only --method lazy follows a field");
+  if (!args.sketch.empty()) throw ParameterError("--sketch", "only --method lazy follows a sketched field");
+  if (!args.masks.empty()) throw ParameterError("--mask", "only --method lazy matches feature masks");
 
   if (args.method == "tile-blend") {
     if (volumeExemplar) throw ParameterError("--method", "tile-blend takes a 2D exemplar, not a volume");
@@ -158,7 +158,7 @@ std::unique_ptr<SolidTexture> makeSolid(const SolidArgs& args, const Mesh& mesh,
 void runSolid(const SolidArgs& args, const GlobalOptions& globals) {
   checkOutputs(args);
   std::vector<std::pair<int, float>> slices;
-  for (const std::string& s : args.slices) slices.push_back(parseSlice(s));
+  for (const std::string& s : args.slices) slices.push_back(parseAxisPosition(s, "--slice", false));
   json report = {{"exemplar", args.exemplars}, {"method", args.method}, {"seed", globals.seed}};
   auto clock = std::chrono::steady_clock::now();
   auto lap = [&clock] {
@@ -227,7 +227,14 @@ void runSolid(const SolidArgs& args, const GlobalOptions& globals) {
         solid->prepare(points);
         colors = solid->evaluateColors(points, normals);
       };
-    writeImage(args.render, renderViews(mesh, &colorAt, views, options));
+    Image image = renderViews(mesh, &colorAt, views, options);
+    if (!args.cut.empty()) {  // the solid inside: a cap across the cut, coloured like the surface
+      const auto [axis, fraction] = parseAxisPosition(args.cut, "--cut", true);
+      const MeshCut opened = cutOpenMesh(coloredCopy(mesh, options.defaultColor), axis, fraction,
+                                         box.size().maxCoeff() / 512.0f, options.defaultColor);
+      image = sideBySide({image, renderViews(opened.mesh, &colorAt, {cutViewAngles(axis)}, options)});
+    }
+    writeImage(args.render, image);
     report["outputs"].push_back({{"file", args.render}, {"seconds", lap()}});
     progress->advance(1);
   }
@@ -308,7 +315,8 @@ Command registerSolidCommand(CLI::App& app, const GlobalOptions& globals) {
   sub->add_option("--noise-scale", args->noiseScale, "tile-deform: grid cells per noise lattice spacing")
       ->capture_default_str();
   addTileBlendOptions(*sub, args->tileSize, args->blendExponent);
-  sub->add_option("--field", args->field, "lazy: rotation field (.tsfield from `texsynth field`) the texture follows");
+  auto* field =
+      sub->add_option("--field", args->field, "lazy: rotation field (.tsfield from `texsynth field`) the texture follows");
   sub->add_option("--inner", args->inner,
                   "lazy with --mesh: exemplar for everything deeper than --shell below the surface (the paper's tree: "
                   "bark outside, wood inside)");
@@ -316,9 +324,24 @@ Command registerSolidCommand(CLI::App& app, const GlobalOptions& globals) {
                   "lazy with --inner: depth of the outer region, as a fraction of the mesh's bounding-box diagonal")
       ->capture_default_str();
   sub->add_option("--levels", args->levels, "lazy: pyramid levels L")->capture_default_str()->check(CLI::Range(1, 8));
-  sub->add_option("--passes", args->passes, "lazy: correction passes per level (8 subpasses each)")
+  sub->add_option("--passes", args->passes, "lazy: correction passes per level above the coarsest (8 subpasses each)")
       ->capture_default_str()
       ->check(CLI::Range(0, 8));
+  sub->add_option("--coarsest-passes", args->coarsestPasses,
+                  "lazy: correction passes at the coarsest level (paper: 3-5, cheap on its small grid)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 8));
+  sub->add_option("--sketch", args->sketch,
+                  "lazy with --mesh: design the rotation field from these sketch curves first (as `texsynth field`, "
+                  "docs/sketch-format.md); instead of --field")
+      ->excludes(field);
+  sub->add_option("--mask", args->masks,
+                  "lazy: feature mask image(s), bright on feature curves (e.g. brick joints): one for all planes or "
+                  "three (XY YZ ZX); matching adds the distance to the features as a channel")
+      ->expected(1, 3);
+  sub->add_option("--cut", args->cut,
+                  "With --render: add a view of the mesh cut open at AXIS=FRACTION of its box (the +AXIS side "
+                  "removed), showing the solid inside");
   return {sub, [args, &globals] { runSolid(*args, globals); }};
 }
 

@@ -14,18 +14,6 @@ void pasteImage(Image& dst, const Image& src, int x0, int y0) {
     }
 }
 
-Image sideBySide(const std::vector<Image>& images, int gap) {
-  int width = gap, height = 0;
-  for (const Image& image : images) width += image.width + gap, height = std::max(height, image.height);
-  Image out(width, height + 2 * gap, 3, 1.0f);
-  int x = gap;
-  for (const Image& image : images) {
-    pasteImage(out, image, x, gap);
-    x += image.width + gap;
-  }
-  return out;
-}
-
 Image enlarge(const Image& src, int factor) {
   Image out(src.width * factor, src.height * factor, src.channels);
   for (int y = 0; y < out.height; ++y)

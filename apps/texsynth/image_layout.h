@@ -8,8 +8,6 @@ namespace texsynth::cli {
 
 // Copies src into dst with its top-left corner at (x, y); parts outside dst are dropped.
 void pasteImage(Image& dst, const Image& src, int x, int y);
-// Images left to right on a white background, `gap` pixels apart, aligned at the top (RGB).
-Image sideBySide(const std::vector<Image>& images, int gap = 4);
 // Nearest-neighbour enlargement by an integer factor (for showing small exemplars).
 Image enlarge(const Image& src, int factor);
 

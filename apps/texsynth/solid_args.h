@@ -25,13 +25,14 @@ struct SolidArgs {
   // tile-blend
   float tileSize = 0, blendExponent = 2.0f;
   // lazy
-  std::string field, inner;
-  int levels = 4, passes = 2;
+  std::string field, sketch, inner, cut;
+  std::vector<std::string> masks;
+  int levels = 4, passes = 2, coarsestPasses = 3;
   float shell = 0.05f;
 };
 
 // --method lazy: one LazySolid on the exemplars (one for all planes, or XY YZ ZX), guided by
-// --field if given; with --inner and a mesh, a second one fills everything deeper than --shell
+// --field or a field designed from --sketch on the mesh if given; with --inner and a mesh, a second one fills everything deeper than --shell
 // (a fraction of the mesh's bounding-box diagonal) below the surface.
 struct LazyBuild {
   std::unique_ptr<SolidTexture> texture;

@@ -3,7 +3,9 @@
 #include <cmath>
 
 #include "solid_args.h"
+#include "texsynth/field/field_designer.h"
 #include "texsynth/field/field_io.h"
+#include "texsynth/field/sketch.h"
 #include "texsynth/io/image_io.h"
 #include "texsynth/solid/lazy_field.h"
 #include "texsynth/solid/lazy_solid_texture.h"
@@ -20,9 +22,14 @@ std::shared_ptr<LazySolid> makeSynthesis(const std::vector<std::string>& exempla
                                          const LazyOrientation& orientation) {
   if (exemplars.size() == 2)
     throw ParameterError("EXEMPLAR", "give one exemplar for all three planes, or three: XY YZ ZX");
-  if (exemplars.size() == 1) return std::make_shared<LazySolid>(readImage(exemplars[0]), options, orientation);
-  return std::make_shared<LazySolid>(readImage(exemplars[0]), readImage(exemplars[1]), readImage(exemplars[2]), options,
-                                     orientation);
+  try {
+    if (exemplars.size() == 1) return std::make_shared<LazySolid>(readImage(exemplars[0]), options, orientation);
+    return std::make_shared<LazySolid>(readImage(exemplars[0]), readImage(exemplars[1]), readImage(exemplars[2]),
+                                       options, orientation);
+  } catch (const ParameterError& e) {
+    if (e.parameter() == "featureMask") throw ParameterError("--mask", e.problem());
+    throw;
+  }
 }
 
 }  // namespace
@@ -32,14 +39,25 @@ LazyBuild makeLazySolid(const SolidArgs& args, const Mesh& mesh, const SolidPlac
   LazySolidOptions options;
   options.levels = args.levels;
   options.passes = args.passes;
+  options.coarsestPasses = args.coarsestPasses;
   options.seed = seed;
   options.cacheDirectory = defaultCacheDirectory();
+  if (!args.masks.empty() && args.masks.size() != 1 && args.masks.size() != args.exemplars.size())
+    throw ParameterError("--mask", "give one mask for all planes, or one per exemplar (XY YZ ZX)");
+  for (const std::string& mask : args.masks) options.featureMasks.push_back(readImage(mask));
   LazyOrientation orientation;
   if (!args.field.empty()) {
     orientation = lazyOrientationFromField(readField(args.field).rotations, placement, options.levels);
     report["field"] = args.field;
+  } else if (!args.sketch.empty()) {
+    if (mesh.positions.empty()) throw ParameterError("--sketch", "needs --mesh: the field is designed around it");
+    const FieldDesign design = designField(mesh, readSketch(args.sketch), {}, noProgress(), args.sketch);
+    orientation = lazyOrientationFromField(design.rotations, placement, options.levels);
+    report["sketch"] = args.sketch;
   }
-  report["variant"] = args.field.empty() ? "lazy, identity field" : "lazy, guided by --field";
+  report["variant"] = !args.field.empty()    ? "lazy, guided by --field"
+                      : !args.sketch.empty() ? "lazy, guided by the field of --sketch"
+                                             : "lazy, identity field";
 
   LazyBuild build;
   auto outer = makeSynthesis(args.exemplars, options, orientation);
@@ -55,6 +73,7 @@ LazyBuild makeLazySolid(const SolidArgs& args, const Mesh& mesh, const SolidPlac
                          "must be a fraction in (0, 1) of the mesh's diagonal, got " + std::to_string(args.shell));
   LazySolidOptions innerOptions = options;
   innerOptions.seed = seed ^ 0x1a2b3c4d5e6fULL;  // independent of the shell's synthesis
+  innerOptions.featureMasks.clear();             // --mask describes the shell's exemplars
   auto inner = makeSynthesis({args.inner}, innerOptions, orientation);
   build.parts.push_back({"core", inner});
   const float depth = args.shell * mesh.bounds().size().norm();
@@ -74,7 +93,8 @@ json lazyStats(const LazyBuild& build) {
       levels.push_back({{"level", l},
                         {"voxels_synthesized", st.voxelsSynthesized},
                         {"corrections", st.corrections},
-                        {"blocks_cached", st.blocksCached}});
+                        {"blocks_cached", st.blocksCached},
+                        {"seconds", st.seconds}});
     }
     parts.push_back({{"region", name}, {"levels", levels}});
   }

@@ -5,7 +5,7 @@
 #include <tuple>
 
 #include "texsynth/core/error.h"
-#include "texsynth/field/surface_projector.h"
+#include "texsynth/field/mesh_cut.h"
 #include "texsynth/render/glyph_mesh.h"
 
 namespace texsynth {
@@ -71,30 +71,14 @@ Image renderFieldGlyphs(const Mesh& mesh, const RotationField& field, const std:
   }
   if (options.showCut) {
     const int axis = options.cutAxis;
-    const float offset = box.min[axis] + options.cutPosition * box.size()[axis];
-    Vec3f normal = Vec3f::Zero();
-    normal[axis] = 1;
-    Mesh cut = clipMesh(base, normal, offset);
     // A cap of small squares where the plane is inside the mesh, glyphs on a coarser lattice.
-    SurfaceProjector projector(mesh);
-    const int u = (axis + 1) % 3, w = (axis + 2) % 3;
     const int capPerGlyph = 6;
-    const float capCell = cell / float(capPerGlyph);
-    Vec3f du = Vec3f::Zero(), dw = Vec3f::Zero();
-    du[u] = 0.5f * capCell;
-    dw[w] = 0.5f * capCell;
-    const int nu = int(std::ceil(box.size()[u] / capCell)), nw = int(std::ceil(box.size()[w] / capCell));
-    for (int j = 0; j < nw; ++j)
-      for (int i = 0; i < nu; ++i) {
-        Vec3f p;
-        p[axis] = offset;
-        p[u] = box.min[u] + (float(i) + 0.5f) * capCell;
-        p[w] = box.min[w] + (float(j) + 0.5f) * capCell;
-        if (!projector.inside(p)) continue;
-        appendSquare(cut, p - 0.2f * radius * normal, du, dw, kCapColor);
-        if (i % capPerGlyph == capPerGlyph / 2 && j % capPerGlyph == capPerGlyph / 2)
-          appendAxisGlyph(cut, p, field.frame(p), 1.6f * length, 1.3f * radius, true);
-      }
+    MeshCut opened = cutOpenMesh(base, axis, options.cutPosition, cell / float(capPerGlyph), kCapColor, 0.2f * radius);
+    Mesh& cut = opened.mesh;
+    const float offset = opened.offset;
+    for (const MeshCut::CapCell& c : opened.cells)
+      if (c.i % capPerGlyph == capPerGlyph / 2 && c.j % capPerGlyph == capPerGlyph / 2)
+        appendAxisGlyph(cut, c.centre, field.frame(c.centre), 1.6f * length, 1.3f * radius, true);
     for (const auto& curve : curves) {
       // Only the parts of curves that survive the cut.
       std::vector<Vec3f> piece;
@@ -110,18 +94,10 @@ Image renderFieldGlyphs(const Mesh& mesh, const RotationField& field, const std:
       appendPolyline(cut, piece, 1.6f * radius, kCurveColor);
     }
     RenderOptions view = options.render;
-    // Look at the cut face from the removed side, a little from above and aside.
-    const float yaws[3] = {90 - 25, 25, 25}, pitches[3] = {20, 65, 20};
-    view.yawDegrees = yaws[axis];
-    view.pitchDegrees = pitches[axis];
+    std::tie(view.yawDegrees, view.pitchDegrees) = cutViewAngles(axis);
     if (!cut.triangles.empty()) views.push_back(renderMesh(cut, view));
   }
-  Image montage(options.render.width * int(views.size()), options.render.height, 3);
-  for (std::size_t v = 0; v < views.size(); ++v)
-    for (int y = 0; y < views[v].height; ++y)
-      std::copy_n(views[v].pixel(0, y), std::size_t(views[v].width) * 3,
-                  montage.pixel(int(v) * options.render.width, y));
-  return montage;
+  return sideBySide(views);
 }
 
 }  // namespace texsynth

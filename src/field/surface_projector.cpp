@@ -159,10 +159,24 @@ bool SurfaceProjector::inside(const Vec3f& p) const {
     // The ray p + s * (1, 0, 0), s > 0: 2D point-in-triangle test in the (y, z) plane.
     Vec3f a = m.mesh.positions[tri[0]] - p, b = m.mesh.positions[tri[1]] - p, c = m.mesh.positions[tri[2]] - p;
     auto edge = [](const Vec3f& u, const Vec3f& v) { return u.y() * v.z() - u.z() * v.y(); };
-    float e0 = edge(a, b), e1 = edge(b, c), e2 = edge(c, a);
-    if (!((e0 > 0 && e1 > 0 && e2 > 0) || (e0 < 0 && e1 < 0 && e2 < 0))) continue;
-    float sum = e0 + e1 + e2;
-    float x = (e1 * a.x() + e2 * b.x() + e0 * c.x()) / sum;
+    const float e0 = edge(a, b), e1 = edge(b, c), e2 = edge(c, a);
+    const float sum = e0 + e1 + e2;
+    if (sum == 0) continue;  // edge-on to the ray
+    // A ray through an edge shared by two triangles must cross exactly one of them (a grid of
+    // cut-cap points on a box hits face diagonals): with the triangle taken counter-clockwise,
+    // an edge with e == 0 counts only if it points up (+y, or +z when level), which holds
+    // for one of the two opposite traversals of a shared edge.
+    const float orientation = sum > 0 ? 1.0f : -1.0f;
+    const float e[3] = {e0 * orientation, e1 * orientation, e2 * orientation};
+    const Vec3f* corners[3] = {&a, &b, &c};
+    bool hit = true;
+    for (int i = 0; i < 3 && hit; ++i) {
+      if (e[i] > 0) continue;
+      const Vec3f d = (*corners[(i + 1) % 3] - *corners[i]) * orientation;
+      hit = e[i] == 0 && (d.y() > 0 || (d.y() == 0 && d.z() > 0));
+    }
+    if (!hit) continue;
+    const float x = (e1 * a.x() + e2 * b.x() + e0 * c.x()) / sum;
     crossings += x > 0;
   }
   return crossings % 2 == 1;

@@ -183,14 +183,30 @@ Image renderViews(const Mesh& mesh, const SurfaceColorFunction* colorAt, const s
   validateRenderOptions(options);
   if (std::int64_t(options.width) * std::int64_t(yawPitch.size()) > 65536)
     throw ParameterError("yawPitch", "too many views: the montage would be wider than 65536 pixels");
-  Image montage(options.width * int(yawPitch.size()), options.height, 3);
-  for (std::size_t v = 0; v < yawPitch.size(); ++v) {
+  std::vector<Image> views;
+  for (const auto& [yaw, pitch] : yawPitch) {
     RenderOptions view = options;
-    view.yawDegrees = yawPitch[v].first;
-    view.pitchDegrees = yawPitch[v].second;
-    Image image = colorAt ? renderMesh(mesh, *colorAt, view) : renderMesh(mesh, view);
+    view.yawDegrees = yaw;
+    view.pitchDegrees = pitch;
+    views.push_back(colorAt ? renderMesh(mesh, *colorAt, view) : renderMesh(mesh, view));
+  }
+  return sideBySide(views);
+}
+
+Image sideBySide(const std::vector<Image>& images, int gap) {
+  if (images.empty()) throw ParameterError("images", "nothing to place side by side");
+  if (gap < 0) throw ParameterError("gap", "must be >= 0");
+  int width = gap, height = 0;
+  for (const Image& image : images) {
+    if (image.channels != 3) throw ParameterError("images", "side by side needs RGB images");
+    width += image.width + gap, height = std::max(height, image.height);
+  }
+  Image montage(width, height + 2 * gap, 3, 1.0f);
+  int x = gap;
+  for (const Image& image : images) {
     for (int y = 0; y < image.height; ++y)
-      std::copy_n(image.pixel(0, y), std::size_t(image.width) * 3, montage.pixel(int(v) * options.width, y));
+      std::copy_n(image.pixel(0, y), std::size_t(image.width) * 3, montage.pixel(x, y + gap));
+    x += image.width + gap;
   }
   return montage;
 }

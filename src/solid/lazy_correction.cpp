@@ -1,5 +1,6 @@
 // Lazy solid synthesis, correction (§4.3): a voxel gathers three N x N neighbourhoods of colours
-// in the planes of its local frame (nearest voxel), projects each with that plane's PCA, and
+// in the planes of its local frame (nearest voxel; on coarse levels with a field, positions
+// integrated along the field and colours read trilinearly), projects each with that plane's PCA, and
 // takes among the candidate triples proposed by its in-plane neighbours (the paper's reduced
 // S(v)) the one whose three exemplar neighbourhoods are nearest, summed over the planes. A step
 // computes all its results from the state before it, then writes them, so results never depend
@@ -36,6 +37,9 @@ std::int32_t component(const CoordinateTriple& t, int plane) {
 Vec3i roundVector(const Vec3f& v) {
   return {int(std::floor(v.x() + 0.5f)), int(std::floor(v.y() + 0.5f)), int(std::floor(v.z() + 0.5f))};
 }
+
+// The local axes of each plane's (a, b), as planeOffset: I_xy (x, y), I_yz (y, z), I_zx (z, x).
+constexpr int kPlaneAxes[3][2] = {{0, 1}, {1, 2}, {2, 0}};
 
 // The 3x3 in-plane offsets with (0,0) first: a voxel's own proposals win ties.
 constexpr int kOffsets[9][2] = {{0, 0}, {-1, -1}, {0, -1}, {1, -1}, {-1, 0}, {1, 0}, {-1, 1}, {0, 1}, {1, 1}};
@@ -106,7 +110,13 @@ class TripleSet {
 
 class VoxelCorrector {
  public:
-  explicit VoxelCorrector(const LevelContext& ctx) : ctx_(ctx), n_(ctx.neighborhoodSize), r_(n_ / 2) {
+  explicit VoxelCorrector(const LevelContext& ctx)
+      : ctx_(ctx),
+        n_(ctx.neighborhoodSize),
+        r_(n_ / 2),
+        integrated_(ctx.integrated()),
+        readRadius_(ctx.readRadius()),
+        reach_(float(r_) * 1.41421356f) {
     for (int p = 0; p < 3; ++p) {
       TS_CHECK(ctx.planes[p]->pca.inputDimension == n_ * n_ * ctx.channels);
       query_[p].resize(std::size_t(ctx.planes[p]->pca.outputDimension));
@@ -115,6 +125,7 @@ class VoxelCorrector {
     buffer_.resize(std::size_t(n_) * n_ * ctx.channels);
     offsets_.resize(std::size_t(3 * (n_ * n_ + 9)));
     located_.resize(offsets_.size());
+    if (integrated_) taps_.resize(std::size_t(3 * n_ * n_)), walk_.resize(std::size_t(n_));
   }
 
   // Corrects voxel `slot` of `self` (the centre block of `around`) into `out`; false (and `out`
@@ -122,13 +133,20 @@ class VoxelCorrector {
   bool correct(const BlockNeighborhood& around, const WorkBlock& self, int slot, CoordinateTriple& out) {
     setOffsets(self.frames[std::size_t(slot)]);
     const Vec3i local(slot % kB, slot / kB % kB, slot / (kB * kB));
-    for (std::size_t i = 0; i < offsets_.size(); ++i)
+    // Integrated levels locate only the candidate sources here (the taps are sampled below).
+    for (std::size_t i = integrated_ ? std::size_t(3 * n_ * n_) : 0; i < offsets_.size(); ++i)
       if ((located_[i] = around.locate(local, offsets_[i])) < 0) return false;
 
     const int c = ctx_.channels, taps = n_ * n_;
+    if (integrated_ && !setIntegratedTaps(around, local)) return false;
     for (int p = 0; p < 3; ++p) {
       float* write = buffer_.data();
       for (int k = 0; k < taps; ++k) {
+        if (integrated_) {
+          if (!sampleTrilinear(around, local, taps_[std::size_t(p * taps + k)], write)) return false;
+          write += c;
+          continue;
+        }
         const int at = located_[std::size_t(p * taps + k)];
         const float* color = around.block(at).colors.data() + std::size_t(at % kBlockVoxels) * kMaxChannels;
         for (int i = 0; i < c; ++i) *write++ = color[i];  // c is small: no memmove call
@@ -183,6 +201,77 @@ class VoxelCorrector {
       for (const auto& d : kOffsets) offsets_[i++] = roundVector(frame * planeOffset(p, d[0], d[1]));
   }
 
+  // The frame of the voxel nearest `offset` (clamped to the read radius); null if unreadable.
+  const Mat3f* frameNear(const BlockNeighborhood& around, const Vec3i& local, const Vec3f& offset) const {
+    const Vec3i o = roundVector(offset).cwiseMax(Vec3i::Constant(-readRadius_)).cwiseMin(Vec3i::Constant(readRadius_));
+    const int at = around.locate(local, o);
+    return at < 0 ? nullptr : &around.block(at).frames[std::size_t(at % kBlockVoxels)];
+  }
+
+  // One unit step along local axis `axis` (times `sign`) from `x`, midpoint rule on the
+  // nearest voxels' frames. False if a frame cannot be read.
+  bool step(const BlockNeighborhood& around, const Vec3i& local, int axis, float sign, Vec3f& x) const {
+    const Mat3f* start = frameNear(around, local, x);
+    if (!start) return false;
+    const Mat3f* middle = frameNear(around, local, x + 0.5f * sign * start->col(axis));
+    if (!middle) return false;
+    x += sign * middle->col(axis);
+    return true;
+  }
+
+  // Coarse levels: each plane's tap (a, b) lies |a| steps along the plane's first local axis
+  // and then |b| steps along its second, so the neighbourhood bends with the field (numerical
+  // integration along the directions, §4.3). Offsets are clamped to sqrt(2) N/2, the reach the
+  // plan allows for. Taps in setOffsets' order (b outer, a inner).
+  bool setIntegratedTaps(const BlockNeighborhood& around, const Vec3i& local) {
+    for (int p = 0; p < 3; ++p) {
+      const int axisA = kPlaneAxes[p][0], axisB = kPlaneAxes[p][1];
+      walk_[std::size_t(r_)] = Vec3f::Zero();
+      for (float sign : {-1.0f, 1.0f}) {
+        Vec3f x = Vec3f::Zero();
+        for (int i = 1; i <= r_; ++i) {
+          if (!step(around, local, axisA, sign, x)) return false;
+          walk_[std::size_t(r_ + int(sign) * i)] = x;
+        }
+      }
+      for (int a = -r_; a <= r_; ++a) {
+        Vec3f* column = &taps_[std::size_t(p * n_ * n_ + (a + r_))];
+        column[std::size_t(r_ * n_)] = walk_[std::size_t(a + r_)];
+        for (float sign : {-1.0f, 1.0f}) {
+          Vec3f x = walk_[std::size_t(a + r_)];
+          for (int i = 1; i <= r_; ++i) {
+            if (!step(around, local, axisB, sign, x)) return false;
+            column[std::size_t((r_ + int(sign) * i) * n_)] = x;
+          }
+        }
+      }
+    }
+    for (Vec3f& tap : taps_) {
+      const float length = tap.norm();
+      if (length > reach_) tap *= reach_ / length;
+    }
+    return true;
+  }
+
+  // Colour at a fractional offset: trilinear over the 8 voxels around it, into out[channels].
+  bool sampleTrilinear(const BlockNeighborhood& around, const Vec3i& local, const Vec3f& offset, float* out) const {
+    const Vec3f base(std::floor(offset.x()), std::floor(offset.y()), std::floor(offset.z()));
+    const Vec3f f = offset - base;
+    const Vec3i corner0 = base.cast<int>();
+    const int c = ctx_.channels;
+    for (int i = 0; i < c; ++i) out[i] = 0.0f;
+    for (int corner = 0; corner < 8; ++corner) {
+      const Vec3i d(corner & 1, corner >> 1 & 1, corner >> 2 & 1);
+      const float w = (d.x() ? f.x() : 1.0f - f.x()) * (d.y() ? f.y() : 1.0f - f.y()) * (d.z() ? f.z() : 1.0f - f.z());
+      if (w == 0.0f) continue;
+      const int at = around.locate(local, corner0 + d);
+      if (at < 0) return false;
+      const float* color = around.block(at).colors.data() + std::size_t(at % kBlockVoxels) * kMaxChannels;
+      for (int i = 0; i < c; ++i) out[i] += w * color[i];
+    }
+    return true;
+  }
+
   // A quick test that distance(t) >= bound, summing in 8 lanes (vectorized). Both sums of these
   // <= 60 non-negative terms are within 60 ulp-sized relative errors of the exact one, so
   // lanes * (1 - 1e-4) >= bound implies the ordered sum >= bound: results stay bit-identical
@@ -229,7 +318,11 @@ class VoxelCorrector {
 
   const LevelContext& ctx_;
   int n_, r_;
+  bool integrated_;
+  int readRadius_;
+  float reach_;  // largest integrated tap offset, sqrt(2) N/2
   std::vector<float> buffer_, query_[3];
+  std::vector<Vec3f> taps_, walk_;  // integrated tap offsets (3 N^2), one walk along an axis (N)
   std::vector<Vec3i> offsets_;
   std::vector<int> located_;
   Mat3f frame_;

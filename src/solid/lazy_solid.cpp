@@ -4,6 +4,7 @@
 #include "texsynth/solid/lazy_solid.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <string>
@@ -57,12 +58,20 @@ void validateLazySolidOptions(const LazySolidOptions& options) {
             "each N must be odd and in [3, 15], got " + std::to_string(n));
   require(options.passes >= 0 && options.passes <= 8, "passes",
           "must be in [0, 8], got " + std::to_string(options.passes));
+  require(options.coarsestPasses >= 0 && options.coarsestPasses <= 8, "coarsestPasses",
+          "must be in [0, 8], got " + std::to_string(options.coarsestPasses));
+  require(options.trilinearLevels >= 0, "trilinearLevels",
+          "must be >= 0, got " + std::to_string(options.trilinearLevels));
   require(options.subpassGrid == 1 || options.subpassGrid == 2, "subpassGrid",
           "s must be 1 or 2 (s^3 subpasses), got " + std::to_string(options.subpassGrid));
   require(options.subpartSize >= 1, "subpartSize", "K must be >= 1, got " + std::to_string(options.subpartSize));
   require(options.candidateCount >= 1 && options.candidateCount <= 64, "candidateCount",
           "N_T must be in [1, 64], got " + std::to_string(options.candidateCount));
   require(options.pcaDimensions >= 1, "pcaDimensions", "must be >= 1, got " + std::to_string(options.pcaDimensions));
+  require(options.featureMasks.size() <= 1 || options.featureMasks.size() == 3, "featureMasks",
+          "give none, one for all planes or three (xy, yz, zx), got " + std::to_string(options.featureMasks.size()));
+  require(std::isfinite(options.featureWeight) && options.featureWeight >= 0.0f, "featureWeight",
+          "must be finite and >= 0");
   require(std::isfinite(options.jitter) && options.jitter >= 0.0f, "jitter", "must be finite and >= 0");
 }
 
@@ -100,11 +109,15 @@ void LazySolid::initialize(const Image& xy, const Image& yz, const Image& zx, Pr
   analysisOptions.levelNeighborhoodSizes = options_.neighborhoodSizes;
   analysisOptions.pcaDimensions = options_.pcaDimensions;
   analysisOptions.similarCount = 1;  // correction draws candidates from the triples instead
-  const bool shared = &xy == &yz && &yz == &zx;
-  for (int p = 0; p < (shared ? 1 : 3); ++p)
+  const bool shared = &xy == &yz && &yz == &zx && options_.featureMasks.size() <= 1;
+  analysisOptions.featureWeight = options_.featureWeight;
+  for (int p = 0; p < (shared ? 1 : 3); ++p) {
+    if (!options_.featureMasks.empty())
+      analysisOptions.featureMask = options_.featureMasks[options_.featureMasks.size() == 3 ? std::size_t(p) : 0];
     analyses_.push_back(options_.cacheDirectory.empty()
                             ? analyzeExemplar(*images[p], analysisOptions, progress)
                             : analyzeExemplarCached(*images[p], analysisOptions, options_.cacheDirectory, progress));
+  }
 
   for (int l = 0; l < options_.levels; ++l) {
     CandidateTripleOptions tripleOptions;
@@ -174,9 +187,12 @@ LevelContext LazySolid::context(int level) const {
 void LazySolid::synthesizeBlocks(std::vector<BlockKey> blocks, Progress& progress) {
   const int levels = options_.levels;
   const std::vector<int> classes = subpassClasses(options_.subpassGrid);
-  std::vector<int> stepClasses;
-  for (int pass = 0; pass < options_.passes; ++pass)
-    stepClasses.insert(stepClasses.end(), classes.begin(), classes.end());
+  const auto stepClassesOf = [&](int level) {
+    std::vector<int> steps;
+    for (int pass = 0; pass < (level == 0 ? options_.coarsestPasses : options_.passes); ++pass)
+      steps.insert(steps.end(), classes.begin(), classes.end());
+    return steps;
+  };
   std::sort(blocks.begin(), blocks.end());
   blocks.erase(std::unique(blocks.begin(), blocks.end()), blocks.end());
 
@@ -185,7 +201,7 @@ void LazySolid::synthesizeBlocks(std::vector<BlockKey> blocks, Progress& progres
   std::vector<BlockKey> deliver = std::move(blocks);
   removeCached(deliver, impl_->caches[std::size_t(levels - 1)]);
   for (int l = levels - 1; l >= 0 && !deliver.empty(); --l) {
-    plans[std::size_t(l)] = planLevel(deliver, stepClasses, context(l).readRadius());
+    plans[std::size_t(l)] = planLevel(deliver, stepClassesOf(l), context(l).readRadius());
     if (l == 0) break;
     deliver = parentBlocks(plans[std::size_t(l)].layers.front());
     removeCached(deliver, impl_->caches[std::size_t(l - 1)]);
@@ -198,7 +214,9 @@ void LazySolid::synthesizeBlocks(std::vector<BlockKey> blocks, Progress& progres
       progress.advance(1);
       continue;
     }
+    const auto started = std::chrono::steady_clock::now();
     const LevelContext ctx = context(l);
+    const std::vector<int> stepClasses = stepClassesOf(l);
     WorkSet current(plan.layers.front());
     const BlockCache* parents = l > 0 ? &impl_->caches[std::size_t(l - 1)] : nullptr;
     parallelForChunks(0, std::int64_t(current.keys.size()), kInitChunk, [&](std::int64_t begin, std::int64_t end) {
@@ -221,6 +239,7 @@ void LazySolid::synthesizeBlocks(std::vector<BlockKey> blocks, Progress& progres
     for (BlockKey key : plan.layers.back())
       cache.emplace(key, current.blocks[std::size_t(current.indexOf(key))].triples);
     stats.blocksCached = std::int64_t(cache.size());
+    stats.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     progress.advance(1);
   }
   progress.end();

@@ -36,10 +36,14 @@ CoordinateTriple jitter(const LevelContext& ctx, const Vec3i& v, const Coordinat
 
 }  // namespace
 
+bool LevelContext::integrated() const {
+  return orientation && *orientation && level < options->trilinearLevels;
+}
+
 int LevelContext::readRadius() const {
   const int r = neighborhoodSize / 2;
   const int rotated = orientation && *orientation ? int(std::ceil(float(r) * 1.41421356f)) : r;
-  return std::max(rotated, 1);
+  return std::max(rotated, 1) + (integrated() ? 1 : 0);
 }
 
 Mat3f LevelContext::frame(int atLevel, const Vec3i& v) const {

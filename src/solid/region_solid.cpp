@@ -51,7 +51,10 @@ RegionSolidTexture::RegionRule surfaceShellRule(const Mesh& mesh, float depth) {
   if (!std::isfinite(depth) || !(depth > 0))
     throw ParameterError("depth", "must be a finite number > 0, got " + std::to_string(depth));
   auto projector = std::make_shared<const SurfaceProjector>(mesh);
-  return [projector, depth](const Vec3f& p) { return projector->closestPoint(p).distance <= depth ? 0 : 1; };
+  // Outside the (closed) mesh is the shell too, so the inner exemplar never shows there.
+  return [projector, depth](const Vec3f& p) {
+    return projector->closestPoint(p).distance <= depth || !projector->inside(p) ? 0 : 1;
+  };
 }
 
 }  // namespace texsynth

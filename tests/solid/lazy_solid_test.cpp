@@ -24,6 +24,7 @@ LazySolidOptions fastOptions() {
   o.levels = 3;
   o.neighborhoodSizes = {5};
   o.passes = 2;
+  o.coarsestPasses = 2;
   o.subpassGrid = 1;
   o.candidateCount = 6;
   o.pcaDimensions = 12;
@@ -65,13 +66,54 @@ TEST(LazySolid, SameVoxelSameTripleWhateverWasRequested) {
   expectRequestIndependent(fastOptions(), {}, {-13, -21, -9}, {30, 27, 25});
 }
 
-TEST(LazySolid, RequestIndependentWithRotatedFieldAndSubpasses) {
+// Two levels, one pass of 8 subpasses each.
+LazySolidOptions onePassOfSubpasses() {
   LazySolidOptions options = fastOptions();
   options.passes = 1;
+  options.coarsestPasses = 1;
   options.subpassGrid = 2;
   options.levels = 2;
+  return options;
+}
+
+TEST(LazySolid, RequestIndependentWithRotatedFieldAndSubpasses) {
+  const LazySolidOptions options = onePassOfSubpasses();
   const Quatf q(Eigen::AngleAxisf(0.6f, Vec3f(1, 2, 0.5f).normalized()));
   expectRequestIndependent(options, constantOrientation(q), {-3, -10, -1}, {12, 11, 10});
+}
+
+// A field that turns about z by 0.08 rad per finest voxel along x (and leans along y), so
+// integrated neighbourhoods really bend on the coarse levels.
+LazyOrientation curvedOrientation() {
+  return [](int, const Vec3f& p) {
+    return Quatf(Eigen::AngleAxisf(0.08f * p.x(), Vec3f::UnitZ()) * Eigen::AngleAxisf(0.03f * p.y(), Vec3f::UnitX()));
+  };
+}
+
+TEST(LazySolid, RequestIndependentWithCurvedFieldIntegratedOnCoarseLevels) {
+  LazySolidOptions options = onePassOfSubpasses();
+  options.neighborhoodSizes = {3, 5};
+  options.trilinearLevels = 2;
+  expectRequestIndependent(options, curvedOrientation(), {-4, -11, -2}, {14, 12, 11});
+}
+
+TEST(LazySolid, IntegratedNeighbourhoodsChangeTheResultOnlyWithACurvedField) {
+  LazySolidOptions nearest = fastOptions(), integrated = fastOptions();
+  nearest.trilinearLevels = 0;
+  integrated.trilinearLevels = 2;
+  auto synthesize = [](const LazySolidOptions& options, const LazyOrientation& orientation) {
+    auto solid = std::make_unique<LazySolid>(pattern(), options, orientation);
+    solid->synthesizeBox({0, 0, 0}, {8, 8, 8});
+    return solid;
+  };
+  // Identity frames: integrated taps land on voxel centres, trilinear weights are 0 or 1.
+  const Quatf identity = Quatf::Identity();
+  expectSameTriples(*synthesize(nearest, constantOrientation(identity)),
+                    *synthesize(integrated, constantOrientation(identity)), {0, 0, 0}, {8, 8, 8});
+  auto a = synthesize(nearest, curvedOrientation()), b = synthesize(integrated, curvedOrientation());
+  int differ = 0;
+  for (int i = 0; i < 512; ++i) differ += a->triple({i % 8, i / 8 % 8, i / 64}, 0) != b->triple({i % 8, i / 8 % 8, i / 64}, 0);
+  EXPECT_GT(differ, 0);
 }
 
 // The plan grows each side by the exact reach of each subpass's class: R where the outermost
@@ -127,10 +169,9 @@ TEST(LazySolid, MedoidColorIsTheExemplarColorClosestToTheOtherTwo) {
 
 TEST(LazySolid, IndependentOfThreadCount) {
   LazySolidOptions options = fastOptions();
-  const Quatf q(Eigen::AngleAxisf(0.4f, Vec3f::UnitZ()));
   auto run = [&](int threads) {
     ThreadLimit limit(threads);
-    auto solid = std::make_unique<LazySolid>(pattern(), options, constantOrientation(q));
+    auto solid = std::make_unique<LazySolid>(pattern(), options, curvedOrientation());
     solid->synthesizeBox({-6, 0, 2}, {12, 12, 8});
     return solid;
   };
@@ -227,6 +268,8 @@ TEST(LazySolid, RejectsBadOptions) {
   expectBad("neighborhoodSizes", [](LazySolidOptions& o) { o.neighborhoodSizes = {4}; });
   expectBad("neighborhoodSizes", [](LazySolidOptions& o) { o.neighborhoodSizes = {}; });
   expectBad("passes", [](LazySolidOptions& o) { o.passes = -1; });
+  expectBad("coarsestPasses", [](LazySolidOptions& o) { o.coarsestPasses = 9; });
+  expectBad("trilinearLevels", [](LazySolidOptions& o) { o.trilinearLevels = -1; });
   expectBad("subpassGrid", [](LazySolidOptions& o) { o.subpassGrid = 3; });
   expectBad("subpartSize", [](LazySolidOptions& o) { o.subpartSize = 0; });
   expectBad("candidateCount", [](LazySolidOptions& o) { o.candidateCount = 0; });

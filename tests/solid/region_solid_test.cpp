@@ -51,6 +51,7 @@ TEST(RegionSolid, SurfaceShellRuleSplitsByDepth) {
   EXPECT_EQ(rule(Vec3f(0.5f, 0.5f, 0.95f)), 0);  // 0.05 below the top face
   EXPECT_EQ(rule(Vec3f(0.05f, 0.5f, 0.5f)), 0);  // near a side
   EXPECT_EQ(rule(Vec3f(0.5f, 0.5f, 0.85f)), 1);  // 0.15 deep
+  EXPECT_EQ(rule(Vec3f(2.0f, 0.5f, 0.5f)), 0);   // far outside is shell, never core
   test::expectParameterError([&] { surfaceShellRule(box, 0.0f); }, "depth");
 }
 

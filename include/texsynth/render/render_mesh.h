@@ -64,4 +64,8 @@ Image renderMesh(const Mesh& mesh, const SurfaceColorFunction& colorAt, const Re
 Image renderViews(const Mesh& mesh, const SurfaceColorFunction* colorAt,
                   const std::vector<std::pair<float, float>>& yawPitch, const RenderOptions& options = {});
 
+// RGB images left to right on a white background, `gap` pixels apart and from the border,
+// aligned at the top (e.g. surface views and a cut view; gap 0 simply joins them).
+Image sideBySide(const std::vector<Image>& images, int gap = 0);
+
 }  // namespace texsynth

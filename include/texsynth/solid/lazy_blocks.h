@@ -95,8 +95,12 @@ struct LevelContext {
   const LazyOrientation* orientation = nullptr;
 
   // Radius (voxels) of everything a correction reads: the rotated neighbourhood and the 3x3
-  // candidate sources; sqrt(2) * N/2 when a field may rotate the planes.
+  // candidate sources; sqrt(2) * N/2 when a field may rotate the planes, one more where
+  // neighbourhoods are integrated and read trilinearly.
   int readRadius() const;
+  // True where the level's neighbourhoods are integrated along the field and read trilinearly
+  // (a coarse level with an orientation).
+  bool integrated() const;
   // Local frame of voxel v at this level (identity without orientation).
   Mat3f frame(int level, const Vec3i& v) const;
   // Colour (all channels) of a triple at this level into out[channels].

@@ -40,6 +40,15 @@ struct LazySolidOptions {
   std::vector<int> neighborhoodSizes = {7, 9};
   // Correction passes per level (paper: 2).
   int passes = 2;
+  // Correction passes at the coarsest level (paper: "3-5 correction passes ... without
+  // barriers" there, as its grid is small). In [0, 8].
+  int coarsestPasses = 3;
+  // Levels 0 .. trilinearLevels - 1 (the coarse ones) sample their neighbourhoods by walking
+  // along the field's local axes (numerical integration, so the neighbourhood bends with the
+  // field) and reading colours trilinearly; finer levels use the centre voxel's frame and the
+  // nearest voxel (§4.3: "trilinear interpolation in coarse levels and nearest neighbor in
+  // finer levels"). Only matters with an orientation. >= 0.
+  int trilinearLevels = 2;
   // s: each pass corrects the s^3 voxel classes (x mod s, y mod s, z mod s) in turn (paper:
   // s^3 = 8). 1 corrects all voxels at once. In {1, 2}.
   int subpassGrid = 2;
@@ -59,13 +68,20 @@ struct LazySolidOptions {
   // (the one with the least L1 colour distance to the other two, a real exemplar colour).
   enum class ColorRule { Mean, Medoid };
   ColorRule colorRule = ColorRule::Mean;
+  // Feature masks (§4: "a further feature component ... high intensity to indicate feature
+  // curves", for regular textures such as bricks): none, one for all planes, or one per plane
+  // (xy, yz, zx), each the size of its exemplar. Matching then adds featureWeight times the
+  // signed distance to the features as a channel (AnalysisOptions::featureMask).
+  std::vector<Image> featureMasks;
+  float featureWeight = 1.0f;
   std::uint64_t seed = 1;
   // Directory of the exemplar-analysis and candidate-triple caches; empty = no disk cache.
   std::string cacheDirectory;
 };
 
 // Throws ParameterError naming the bad option ("levels", "neighborhoodSizes", "passes",
-// "subpassGrid", "subpartSize", "candidateCount", "pcaDimensions", "jitter").
+// "subpassGrid", "subpartSize", "candidateCount", "pcaDimensions", "jitter", "coarsestPasses",
+// "trilinearLevels", "featureMasks", "featureWeight").
 void validateLazySolidOptions(const LazySolidOptions& options);
 
 // The local frame (global -> local rotation, as RotationField) at a position of `level`
@@ -78,6 +94,7 @@ struct LazyLevelStats {
   std::int64_t voxelsSynthesized = 0;  // voxels upsampled / initialized (incl. margins)
   std::int64_t corrections = 0;        // voxel corrections (one per voxel per pass)
   std::int64_t blocksCached = 0;       // finished 4^3 blocks now in the cache
+  double seconds = 0;                  // wall time spent on the level
 };
 
 class LazySolid {

@@ -36,8 +36,8 @@ class RegionSolidTexture : public SolidTexture {
   RegionRule rule_;
 };
 
-// Region 0 within `depth` (world units, > 0) of the mesh's surface, region 1 deeper: a shell
-// and a core. Throws ParameterError("depth", ...) unless depth is finite and > 0, InputError
+// Region 0 within `depth` (world units, > 0) of the mesh's surface or outside it, region 1
+// deeper inside: a shell and a core (inside by ray parity: the mesh should be closed). Throws ParameterError("depth", ...) unless depth is finite and > 0, InputError
 // ("mesh", ...) for a mesh without triangles.
 RegionSolidTexture::RegionRule surfaceShellRule(const Mesh& mesh, float depth);
 
