@@ -3,6 +3,8 @@
 // bunny, or a UV sphere of similar size when the data is not installed).
 #include <benchmark/benchmark.h>
 
+#include <string>
+
 #include "test_support.h"
 #include "texsynth/core/data_paths.h"
 #include "texsynth/core/parallel.h"
@@ -91,10 +93,11 @@ void BM_ColorMeshVertices(benchmark::State& state) {
 BENCHMARK(BM_ColorMeshVertices)->DenseRange(0, 3)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // Lazy synthesis of a full R^3 volume (fresh cache each iteration) from a 64^2 test pattern on
-// 2 threads; items/s = delivered voxels/s. range(1) = 1: paper defaults (L = 4, N = 7/9, 2 passes,
-// 8 subpasses); 0: a light setting (L = 3, N = 5, 1 pass, 8 subpasses). The standard subpass
-// scheme makes every level grow by about passes * 8 * (N/2 - 1/2) voxels on each side, which
-// dominates (a 16^3 box costs about as much as a 64^3 one).
+// 2 threads; items/s = delivered voxels/s. range(1) = 1: paper defaults (L = 4, N = 7/9, 2 passes
+// of 8 subpasses, 3 at the coarsest level); 0: a light setting (L = 3, N = 5, 1 pass of 8
+// subpasses). range(2) = 1: dual-grid correction (M = 12) above the coarsest level; 0: the
+// standard scheme, whose every level grows by about passes * 8 * (N/2 - 1/2) voxels on each side
+// (a 16^3 box costs about as much as a 64^3 one).
 void BM_LazySolidVolume(benchmark::State& state) {
   ThreadLimit limit(2);
   const int n = int(state.range(0));
@@ -103,7 +106,9 @@ void BM_LazySolidVolume(benchmark::State& state) {
     options.levels = 3;
     options.neighborhoodSizes = {5};
     options.passes = 1;
+    options.coarsestPasses = 1;
   }
+  options.dualGrid = state.range(2) == 1;
   const Image exemplar = test::makeTestPattern(64, 64);
   std::vector<LazyLevelStats> stats;
   for (auto _ : state) {
@@ -118,13 +123,16 @@ void BM_LazySolidVolume(benchmark::State& state) {
   state.counters["corrections"] = double(corrections);
   state.counters["voxels_all_levels"] = double(voxels);
   state.SetItemsProcessed(state.iterations() * std::int64_t(n) * n * n);
-  state.SetLabel(state.range(1) ? "paper defaults" : "light");
+  state.SetLabel(std::string(state.range(1) ? "paper defaults" : "light") +
+                 (state.range(2) ? ", dual grid" : ", standard scheme"));
 }
 BENCHMARK(BM_LazySolidVolume)
-    ->Args({64, 0})
-    ->Args({16, 1})
-    ->Args({64, 1})
-    ->Args({128, 1})
+    ->Args({64, 0, 0})
+    ->Args({16, 1, 0})
+    ->Args({16, 1, 1})
+    ->Args({64, 1, 0})
+    ->Args({64, 1, 1})
+    ->Args({128, 1, 1})
     ->Iterations(1)
     ->Unit(benchmark::kSecond)
     ->UseRealTime();

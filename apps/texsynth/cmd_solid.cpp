@@ -331,6 +331,13 @@ Command registerSolidCommand(CLI::App& app, const GlobalOptions& globals) {
                   "lazy: correction passes at the coarsest level (paper: 3-5, cheap on its small grid)")
       ->capture_default_str()
       ->check(CLI::Range(0, 8));
+  sub->add_flag("--dual-grid,!--no-dual-grid", args->dualGrid,
+                "lazy: dual-grid correction (paper §5.3, on by default) on all levels but the coarsest: corrections "
+                "read only their own MxMxM cell's current state, so a request depends on far fewer voxels; "
+                "--no-dual-grid: the standard pass scheme");
+  sub->add_option("--grid-cell", args->gridCell, "lazy with --dual-grid: the cell side M in voxels (paper: 10-15)")
+      ->capture_default_str()
+      ->check(CLI::Range(4, 64));
   sub->add_option("--sketch", args->sketch,
                   "lazy with --mesh: design the rotation field from these sketch curves first (as `texsynth field`, "
                   "docs/sketch-format.md); instead of --field")

@@ -27,7 +27,8 @@ struct SolidArgs {
   // lazy
   std::string field, sketch, inner, cut;
   std::vector<std::string> masks;
-  int levels = 4, passes = 2, coarsestPasses = 3;
+  int levels = 4, passes = 2, coarsestPasses = 3, gridCell = 12;
+  bool dualGrid = true;
   float shell = 0.05f;
 };
 

@@ -40,6 +40,8 @@ LazyBuild makeLazySolid(const SolidArgs& args, const Mesh& mesh, const SolidPlac
   options.levels = args.levels;
   options.passes = args.passes;
   options.coarsestPasses = args.coarsestPasses;
+  options.dualGrid = args.dualGrid;
+  options.gridCellSize = args.gridCell;
   options.seed = seed;
   options.cacheDirectory = defaultCacheDirectory();
   if (!args.masks.empty() && args.masks.size() != 1 && args.masks.size() != args.exemplars.size())

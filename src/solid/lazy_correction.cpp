@@ -48,15 +48,14 @@ constexpr int kOffsets[9][2] = {{0, 0}, {-1, -1}, {0, -1}, {1, -1}, {-1, 0}, {1,
 class BlockNeighborhood {
  public:
   BlockNeighborhood(const WorkSet& set, const Vec3i& block, int radius, int step)
-      : span_((kB - 1 + radius) / kB), side_(2 * span_ + 1) {
+      : set_(set), span_((kB - 1 + radius) / kB), side_(2 * span_ + 1) {
     table_.resize(std::size_t(side_) * side_ * side_);
     for (int z = 0; z < side_; ++z)
       for (int y = 0; y < side_; ++y)
         for (int x = 0; x < side_; ++x) {
           const std::int32_t i =
               set.indexOf(blockKey(block.x() + x - span_, block.y() + y - span_, block.z() + z - span_));
-          table_[std::size_t((z * side_ + y) * side_ + x)] =
-              i >= 0 && set.lastLayer[std::size_t(i)] >= step - 1 ? &set.blocks[std::size_t(i)] : nullptr;
+          table_[std::size_t((z * side_ + y) * side_ + x)] = i >= 0 && set.lastLayer[std::size_t(i)] >= step - 1 ? i : -1;
         }
   }
   // Voxel at `offset` from the voxel at `local` (0..kB-1 per axis) of the centre block, as
@@ -64,14 +63,26 @@ class BlockNeighborhood {
   int locate(const Vec3i& local, const Vec3i& offset) const {
     const Vec3i u = local + offset + Vec3i::Constant(span_ * kB);  // >= 0 within the radius
     const int t = ((u.z() / kB) * side_ + u.y() / kB) * side_ + u.x() / kB;
-    if (table_[std::size_t(t)] == nullptr) return -1;
+    if (table_[std::size_t(t)] < 0) return -1;
     return t * kBlockVoxels + ((u.z() % kB) * kB + u.y() % kB) * kB + u.x() % kB;
   }
-  const WorkBlock& block(int located) const { return *table_[std::size_t(located / kBlockVoxels)]; }
+  const WorkBlock& block(int located) const { return set_.blocks[index(located)]; }
+  // A located voxel's colours and triple: now, or as they were when the grid phase began.
+  const float* colors(int located, bool atPhaseStart) const {
+    const std::size_t slot = std::size_t(located % kBlockVoxels) * kMaxChannels;
+    return (atPhaseStart ? set_.phaseStart[index(located)].colors.data() : block(located).colors.data()) + slot;
+  }
+  const CoordinateTriple& triple(int located, bool atPhaseStart) const {
+    const std::size_t slot = std::size_t(located % kBlockVoxels);
+    return atPhaseStart ? set_.phaseStart[index(located)].triples[slot] : block(located).triples[slot];
+  }
 
  private:
+  std::size_t index(int located) const { return std::size_t(table_[std::size_t(located / kBlockVoxels)]); }
+
+  const WorkSet& set_;
   int span_, side_;
-  std::vector<const WorkBlock*> table_;
+  std::vector<std::int32_t> table_;
 };
 
 // Open-addressing set of the triples already measured for one voxel (a generation stamp
@@ -130,9 +141,11 @@ class VoxelCorrector {
 
   // Corrects voxel `slot` of `self` (the centre block of `around`) into `out`; false (and `out`
   // untouched) if it would read a block that may not be read.
-  bool correct(const BlockNeighborhood& around, const WorkBlock& self, int slot, CoordinateTriple& out) {
+  bool correct(const BlockNeighborhood& around, const WorkBlock& self, int slot, const GridPhase* phase,
+               CoordinateTriple& out) {
     setOffsets(self.frames[std::size_t(slot)]);
     const Vec3i local(slot % kB, slot / kB % kB, slot / (kB * kB));
+    setCell(self.origin + local, phase);
     // Integrated levels locate only the candidate sources here (the taps are sampled below).
     for (std::size_t i = integrated_ ? std::size_t(3 * n_ * n_) : 0; i < offsets_.size(); ++i)
       if ((located_[i] = around.locate(local, offsets_[i])) < 0) return false;
@@ -147,8 +160,8 @@ class VoxelCorrector {
           write += c;
           continue;
         }
-        const int at = located_[std::size_t(p * taps + k)];
-        const float* color = around.block(at).colors.data() + std::size_t(at % kBlockVoxels) * kMaxChannels;
+        const std::size_t tap = std::size_t(p * taps + k);
+        const float* color = around.colors(located_[tap], outsideCell(offsets_[tap]));
         for (int i = 0; i < c; ++i) *write++ = color[i];  // c is small: no memmove call
       }
       ctx_.planes[p]->pca.project(buffer_.data(), query_[p].data());
@@ -163,16 +176,16 @@ class VoxelCorrector {
       std::int32_t proposed[9];
       int proposals = 0;
       for (int k = 0; k < 9; ++k) {
-        const int at = located_[std::size_t(3 * taps + p * 9 + k)];
-        const std::int32_t pixel = component(around.block(at).triples[std::size_t(at % kBlockVoxels)], p);
+        const std::size_t source = std::size_t(3 * taps + p * 9 + k);
+        const std::int32_t pixel = component(around.triple(located_[source], outsideCell(offsets_[source])), p);
         // [T_P(v + d) - h P(d)]: the in-plane offset is (a, b) in the plane's (u, v).
         const int u = wrapIndex(std::int64_t(pixel % ctx_.width) - ctx_.spacing * kOffsets[k][0], ctx_.width);
         const int w = wrapIndex(std::int64_t(pixel / ctx_.width) - ctx_.spacing * kOffsets[k][1], ctx_.height);
-        const std::int32_t source = w * ctx_.width + u;
-        if (std::find(proposed, proposed + proposals, source) != proposed + proposals) continue;
-        proposed[proposals++] = source;
-        const CoordinateTriple* triples = candidates.at(Plane(p), source);
-        const float* errors = candidates.errorsAt(Plane(p), source);
+        const std::int32_t sourcePixel = w * ctx_.width + u;
+        if (std::find(proposed, proposed + proposals, sourcePixel) != proposed + proposals) continue;
+        proposed[proposals++] = sourcePixel;
+        const CoordinateTriple* triples = candidates.at(Plane(p), sourcePixel);
+        const float* errors = candidates.errorsAt(Plane(p), sourcePixel);
         for (int j = 0; j < candidates.count; ++j) {
           // A triple seen before cannot win now: it lost (or tied) against a best no worse.
           if (!std::isfinite(errors[j]) || !seen_.insert(triples[j])) continue;
@@ -199,6 +212,21 @@ class VoxelCorrector {
         for (int a = -r_; a <= r_; ++a) offsets_[i++] = roundVector(frame * planeOffset(p, a, b));
     for (int p = 0; p < 3; ++p)
       for (const auto& d : kOffsets) offsets_[i++] = roundVector(frame * planeOffset(p, d[0], d[1]));
+  }
+
+  // Grid correction: the voxel's own cell, [cellLo_, cellHi_] per axis, relative to the voxel.
+  void setCell(const Vec3i& voxel, const GridPhase* phase) {
+    gridded_ = phase != nullptr;
+    if (!gridded_) return;
+    for (int a = 0; a < 3; ++a) {
+      const int lo = floorDiv(voxel[a] + phase->shift, phase->cellSize) * phase->cellSize - phase->shift;
+      cellLo_[a] = lo - voxel[a];
+      cellHi_[a] = lo + phase->cellSize - 1 - voxel[a];
+    }
+  }
+  // True if the voxel at `offset` lies in another cell: its state at the phase start is read.
+  bool outsideCell(const Vec3i& offset) const {
+    return gridded_ && ((offset.array() < cellLo_.array()).any() || (offset.array() > cellHi_.array()).any());
   }
 
   // The frame of the voxel nearest `offset` (clamped to the read radius); null if unreadable.
@@ -266,7 +294,7 @@ class VoxelCorrector {
       if (w == 0.0f) continue;
       const int at = around.locate(local, corner0 + d);
       if (at < 0) return false;
-      const float* color = around.block(at).colors.data() + std::size_t(at % kBlockVoxels) * kMaxChannels;
+      const float* color = around.colors(at, outsideCell(corner0 + d));
       for (int i = 0; i < c; ++i) out[i] += w * color[i];
     }
     return true;
@@ -325,6 +353,8 @@ class VoxelCorrector {
   std::vector<Vec3f> taps_, walk_;  // integrated tap offsets (3 N^2), one walk along an axis (N)
   std::vector<Vec3i> offsets_;
   std::vector<int> located_;
+  bool gridded_ = false;
+  Vec3i cellLo_ = Vec3i::Zero(), cellHi_ = Vec3i::Zero();
   Mat3f frame_;
   bool valid_ = false;
   TripleSet seen_;
@@ -332,11 +362,12 @@ class VoxelCorrector {
 
 }  // namespace
 
-std::int64_t correctStep(const LevelContext& ctx, WorkSet& set, int step, int s, int voxelClass) {
+std::int64_t correctStep(const LevelContext& ctx, WorkSet& set, int step, int s, int voxelClass,
+                         const GridPhase* phase) {
   const int radius = ctx.readRadius();
   std::vector<std::int32_t> targets;
   for (std::size_t i = 0; i < set.keys.size(); ++i)
-    if (set.lastLayer[i] >= step) targets.push_back(std::int32_t(i));
+    if (phase ? phase->correct[i] != 0 : set.lastLayer[i] >= step) targets.push_back(std::int32_t(i));
   // Results first (reading only the state before the step), then written back.
   std::vector<CoordinateTriple> results(targets.size() * kBlockVoxels);
   std::vector<std::uint64_t> corrected(targets.size(), 0);  // bit per slot
@@ -351,7 +382,8 @@ std::int64_t correctStep(const LevelContext& ctx, WorkSet& set, int step, int s,
         if (voxelClass >= 0 &&
             (wrapIndex(v.x(), s) | wrapIndex(v.y(), s) << 1 | wrapIndex(v.z(), s) << 2) != voxelClass)
           continue;
-        if (corrector->correct(around, in, slot, results[std::size_t(i) * kBlockVoxels + std::size_t(slot)]))
+        if (phase && !(phase->correct[index] >> slot & 1)) continue;
+        if (corrector->correct(around, in, slot, phase, results[std::size_t(i) * kBlockVoxels + std::size_t(slot)]))
           corrected[std::size_t(i)] |= std::uint64_t(1) << slot;
       }
     }

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "texsynth/core/error.h"
+#include "texsynth/core/parallel.h"
 #include "texsynth/solid/lazy_blocks.h"
 
 namespace texsynth::lazy {
@@ -74,6 +75,94 @@ LazyDependencyPlan planLevel(const std::vector<BlockKey>& deliver, const std::ve
   }
   plan.layers[std::size_t(steps)] = std::move(base);
   return plan;
+}
+
+namespace {
+
+// Inclusive index ranges along x, y, z.
+struct IndexBox {
+  Vec3i lo, hi;
+};
+
+// Appends the keys of every index in `box`.
+void appendBox(std::vector<BlockKey>& keys, const IndexBox& box) {
+  for (int z = box.lo.z(); z <= box.hi.z(); ++z)
+    for (int y = box.lo.y(); y <= box.hi.y(); ++y)
+      for (int x = box.lo.x(); x <= box.hi.x(); ++x) keys.push_back(blockKey(x, y, z));
+}
+
+// The voxels [lo, hi] of an index box of `size`-voxel units whose origin is shifted by -shift.
+IndexBox voxelsOf(const Vec3i& index, int size, int shift) {
+  const Vec3i lo = index * size - Vec3i::Constant(shift);
+  return {lo, lo + Vec3i::Constant(size - 1)};
+}
+
+// The indices of the `size`-voxel units (shifted by -shift) touching voxels [lo - grow, hi + grow].
+IndexBox unitsTouching(const IndexBox& voxels, int grow, int size, int shift) {
+  IndexBox out;
+  for (int a = 0; a < 3; ++a) {
+    out.lo[a] = floorDiv(voxels.lo[a] - grow + shift, size);
+    out.hi[a] = floorDiv(voxels.hi[a] + grow + shift, size);
+  }
+  return out;
+}
+
+}  // namespace
+
+LazyDependencyPlan planGridLevel(const std::vector<BlockKey>& deliver, int cellSize, int readRadius, bool dualPhase) {
+  TS_CHECK(cellSize >= 2 && readRadius >= 1);
+  LazyDependencyPlan plan;
+  plan.gridScheme = true;
+  plan.cellSize = cellSize;
+  std::vector<BlockKey> base = deliver;
+  sortUnique(base);
+  const int half = cellSize / 2;
+  // Voxels whose primary-phase result is read: the delivered blocks, or the dual cells around them.
+  std::vector<IndexBox> needed;
+  for (BlockKey key : base) {
+    const IndexBox block = voxelsOf(blockIndex(key), kB, 0);
+    if (dualPhase)
+      appendBox(plan.dualCells, unitsTouching(block, 0, cellSize, half));
+    else
+      needed.push_back(block);
+  }
+  sortUnique(plan.dualCells);
+  for (BlockKey key : plan.dualCells) needed.push_back(voxelsOf(blockIndex(key), cellSize, half));
+  const int grow = dualPhase ? readRadius : 0;
+  for (const IndexBox& voxels : needed) appendBox(plan.primaryCells, unitsTouching(voxels, grow, cellSize, 0));
+  sortUnique(plan.primaryCells);
+  std::vector<BlockKey> all;
+  for (BlockKey key : plan.primaryCells)
+    appendBox(all, unitsTouching(voxelsOf(blockIndex(key), cellSize, 0), readRadius, kB, 0));
+  sortUnique(all);
+  plan.layers = {std::move(all), std::move(base)};
+  return plan;
+}
+
+GridPhase beginGridPhase(WorkSet& set, const std::vector<BlockKey>& cells, int cellSize, int shift) {
+  GridPhase phase;
+  phase.cellSize = cellSize;
+  phase.shift = shift;
+  phase.correct.assign(set.blocks.size(), 0);
+  set.phaseStart.resize(set.blocks.size());
+  parallelForChunks(0, std::int64_t(set.blocks.size()), 64, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t i = begin; i < end; ++i) {
+      const WorkBlock& block = set.blocks[std::size_t(i)];
+      set.phaseStart[std::size_t(i)].triples = block.triples;
+      set.phaseStart[std::size_t(i)].colors = block.colors;
+      BlockKey lastCell = 0;
+      bool lastIn = false, any = false;
+      for (int slot = 0; slot < kBlockVoxels; ++slot) {
+        const Vec3i v = block.origin + Vec3i(slot % kB, slot / kB % kB, slot / (kB * kB));
+        const BlockKey cell = blockKey(floorDiv(v.x() + shift, cellSize), floorDiv(v.y() + shift, cellSize),
+                                       floorDiv(v.z() + shift, cellSize));
+        if (!any || cell != lastCell)  // a block spans at most 8 cells: look each up once in a row
+          lastIn = std::binary_search(cells.begin(), cells.end(), cell), lastCell = cell, any = true;
+        if (lastIn) phase.correct[std::size_t(i)] |= std::uint64_t(1) << slot;
+      }
+    }
+  });
+  return phase;
 }
 
 std::vector<BlockKey> parentBlocks(const std::vector<BlockKey>& blocks) {

@@ -60,6 +60,8 @@ void validateLazySolidOptions(const LazySolidOptions& options) {
           "must be in [0, 8], got " + std::to_string(options.passes));
   require(options.coarsestPasses >= 0 && options.coarsestPasses <= 8, "coarsestPasses",
           "must be in [0, 8], got " + std::to_string(options.coarsestPasses));
+  require(options.gridCellSize >= 4 && options.gridCellSize <= 64, "gridCellSize",
+          "M must be in [4, 64], got " + std::to_string(options.gridCellSize));
   require(options.trilinearLevels >= 0, "trilinearLevels",
           "must be >= 0, got " + std::to_string(options.trilinearLevels));
   require(options.subpassGrid == 1 || options.subpassGrid == 2, "subpassGrid",
@@ -200,8 +202,11 @@ void LazySolid::synthesizeBlocks(std::vector<BlockKey> blocks, Progress& progres
   std::vector<LazyDependencyPlan> plans(static_cast<std::size_t>(levels));
   std::vector<BlockKey> deliver = std::move(blocks);
   removeCached(deliver, impl_->caches[std::size_t(levels - 1)]);
+  const auto gridded = [&](int level) { return options_.dualGrid && level > 0 && options_.passes > 0; };
   for (int l = levels - 1; l >= 0 && !deliver.empty(); --l) {
-    plans[std::size_t(l)] = planLevel(deliver, stepClassesOf(l), context(l).readRadius());
+    plans[std::size_t(l)] = gridded(l) ? planGridLevel(deliver, options_.gridCellSize, context(l).readRadius(),
+                                                       options_.passes >= 2)
+                                       : planLevel(deliver, stepClassesOf(l), context(l).readRadius());
     if (l == 0) break;
     deliver = parentBlocks(plans[std::size_t(l)].layers.front());
     removeCached(deliver, impl_->caches[std::size_t(l - 1)]);
@@ -231,10 +236,27 @@ void LazySolid::synthesizeBlocks(std::vector<BlockKey> blocks, Progress& progres
     });
     LazyLevelStats& stats = stats_[std::size_t(l)];
     stats.voxelsSynthesized += std::int64_t(current.keys.size()) * kBlockVoxels;
-    for (std::size_t i = 1; i < plan.layers.size(); ++i)
-      for (BlockKey key : plan.layers[i]) current.lastLayer[std::size_t(current.indexOf(key))] = std::int32_t(i);
-    for (std::size_t i = 0; i < stepClasses.size(); ++i)
-      stats.corrections += correctStep(ctx, current, int(i) + 1, options_.subpassGrid, stepClasses[i]);
+    if (plan.gridScheme) {
+      // Every block stays readable; the phases' cells decide what is read at which version.
+      std::fill(current.lastLayer.begin(), current.lastLayer.end(), std::int32_t(stepClasses.size()));
+      const int primaryPasses = (options_.passes + 1) / 2, dualPasses = options_.passes / 2;
+      int step = 1;
+      for (int phaseIndex = 0; phaseIndex < 2; ++phaseIndex) {
+        if ((phaseIndex == 0 ? primaryPasses : dualPasses) == 0) continue;
+        const GridPhase phase =
+            beginGridPhase(current, phaseIndex == 0 ? plan.primaryCells : plan.dualCells, plan.cellSize,
+                           phaseIndex == 0 ? 0 : plan.cellSize / 2);
+        for (int pass = 0; pass < (phaseIndex == 0 ? primaryPasses : dualPasses); ++pass)
+          for (int voxelClass : subpassClasses(options_.subpassGrid))
+            stats.corrections += correctStep(ctx, current, step++, options_.subpassGrid, voxelClass, &phase);
+      }
+      current.phaseStart.clear();
+    } else {
+      for (std::size_t i = 1; i < plan.layers.size(); ++i)
+        for (BlockKey key : plan.layers[i]) current.lastLayer[std::size_t(current.indexOf(key))] = std::int32_t(i);
+      for (std::size_t i = 0; i < stepClasses.size(); ++i)
+        stats.corrections += correctStep(ctx, current, int(i) + 1, options_.subpassGrid, stepClasses[i]);
+    }
     BlockCache& cache = impl_->caches[std::size_t(l)];
     for (BlockKey key : plan.layers.back())
       cache.emplace(key, current.blocks[std::size_t(current.indexOf(key))].triples);

@@ -25,6 +25,7 @@ LazySolidOptions fastOptions() {
   o.neighborhoodSizes = {5};
   o.passes = 2;
   o.coarsestPasses = 2;
+  o.dualGrid = false;  // the standard scheme; dual-grid tests switch it on
   o.subpassGrid = 1;
   o.candidateCount = 6;
   o.pcaDimensions = 12;
@@ -116,6 +117,61 @@ TEST(LazySolid, IntegratedNeighbourhoodsChangeTheResultOnlyWithACurvedField) {
   EXPECT_GT(differ, 0);
 }
 
+TEST(LazySolid, DualGridRequestIndependent) {
+  LazySolidOptions options = fastOptions();
+  options.dualGrid = true;
+  options.gridCellSize = 6;
+  options.subpassGrid = 2;
+  options.coarsestPasses = 1;
+  expectRequestIndependent(options, {}, {-7, -13, -3}, {19, 17, 15});
+}
+
+TEST(LazySolid, DualGridRequestIndependentWithCurvedField) {
+  LazySolidOptions options = onePassOfSubpasses();
+  options.passes = 3;  // two primary passes, one dual
+  options.dualGrid = true;
+  options.gridCellSize = 5;
+  options.neighborhoodSizes = {3, 5};
+  expectRequestIndependent(options, curvedOrientation(), {-4, -11, -2}, {14, 12, 11});
+}
+
+// Per-voxel reach of the grid plan: a delivered block's dual cells, their reach in primary
+// cells, and those cells' reach in blocks; independent of passes and subpasses.
+TEST(LazySolid, GridPlanCoversCellsAndTheirReach) {
+  const std::vector<lazy::BlockKey> deliver = {lazy::blockKey(0, 0, 0)};  // voxels 0..3
+  // M = 8: dual cells [-4, 3], [4, 11] -> only the first touches 0..3 per axis.
+  const lazy::LazyDependencyPlan plan = lazy::planGridLevel(deliver, 8, 2, true);
+  ASSERT_TRUE(plan.gridScheme);
+  EXPECT_EQ(plan.dualCells, std::vector<lazy::BlockKey>{lazy::blockKey(0, 0, 0)});
+  // Dual cell voxels -4..3, read 2 further: -6..5 -> primary cells -1 and 0 per axis.
+  EXPECT_EQ(plan.primaryCells.size(), 8u);
+  // Primary cells cover -8..7, read 2 further: -10..9 -> blocks -3..2 per axis.
+  EXPECT_EQ(plan.layers.front().size(), 6u * 6u * 6u);
+  EXPECT_EQ(plan.layers.back(), deliver);
+  const lazy::LazyDependencyPlan primaryOnly = lazy::planGridLevel(deliver, 8, 2, false);
+  EXPECT_TRUE(primaryOnly.dualCells.empty());
+  EXPECT_EQ(primaryOnly.primaryCells.size(), 1u);  // 0..3 lies in cell 0
+  EXPECT_EQ(primaryOnly.layers.front().size(), 4u * 4u * 4u);  // -2..9: blocks -1..2
+}
+
+TEST(LazySolid, DualGridSynthesizesFewerVoxelsForASlice) {
+  LazySolidOptions standard = fastOptions();
+  standard.levels = 2;
+  standard.coarsestPasses = 1;
+  standard.subpassGrid = 2;
+  standard.neighborhoodSizes = {5, 7};
+  LazySolidOptions dual = standard;
+  dual.dualGrid = true;
+  LazySolid a(pattern(), standard), b(pattern(), dual);
+  a.synthesizeBox({0, 0, 0}, {16, 16, 1});
+  b.synthesizeBox({0, 0, 0}, {16, 16, 1});
+  const auto& finestA = a.stats().back();
+  const auto& finestB = b.stats().back();
+  EXPECT_LT(2 * finestB.voxelsSynthesized, finestA.voxelsSynthesized)
+      << finestB.voxelsSynthesized << " vs " << finestA.voxelsSynthesized;
+  EXPECT_LT(finestB.corrections, finestA.corrections);
+}
+
 // The plan grows each side by the exact reach of each subpass's class: R where the outermost
 // voxel has the class's parity, R - 1 where it does not.
 TEST(LazySolid, PlanGrowsEachSideByTheReachOfTheCorrectedClass) {
@@ -169,6 +225,9 @@ TEST(LazySolid, MedoidColorIsTheExemplarColorClosestToTheOtherTwo) {
 
 TEST(LazySolid, IndependentOfThreadCount) {
   LazySolidOptions options = fastOptions();
+  options.passes = 3;
+  options.dualGrid = true;
+  options.gridCellSize = 6;
   auto run = [&](int threads) {
     ThreadLimit limit(threads);
     auto solid = std::make_unique<LazySolid>(pattern(), options, curvedOrientation());
@@ -207,16 +266,21 @@ Volume volumeOf(const LazySolid& solid, int n, bool randomTriples) {
 }
 
 TEST(LazySolid, FullVolumeSlicesAreCloserToTheExemplarThanRandomTriples) {
-  LazySolidOptions options = fastOptions();
-  LazySolid solid(pattern(), options);
-  const int n = 32;
-  solid.synthesizeBox({0, 0, 0}, {n, n, n});
-  MetricOptions metrics;
-  metrics.patchSize = 5;
-  metrics.slicesPerAxis = 2;
-  const double synthesized = evaluateVolume(pattern(), volumeOf(solid, n, false), metrics).mean.coherence;
-  const double random = evaluateVolume(pattern(), volumeOf(solid, n, true), metrics).mean.coherence;
-  EXPECT_LT(synthesized, 0.75 * random) << "synthesized " << synthesized << " random " << random;
+  for (bool dualGrid : {false, true}) {
+    SCOPED_TRACE(dualGrid ? "dual grid" : "standard scheme");
+    LazySolidOptions options = fastOptions();
+    options.dualGrid = dualGrid;
+    options.gridCellSize = 8;
+    LazySolid solid(pattern(), options);
+    const int n = 32;
+    solid.synthesizeBox({0, 0, 0}, {n, n, n});
+    MetricOptions metrics;
+    metrics.patchSize = 5;
+    metrics.slicesPerAxis = 2;
+    const double synthesized = evaluateVolume(pattern(), volumeOf(solid, n, false), metrics).mean.coherence;
+    const double random = evaluateVolume(pattern(), volumeOf(solid, n, true), metrics).mean.coherence;
+    EXPECT_LT(synthesized, 0.75 * random) << "synthesized " << synthesized << " random " << random;
+  }
 }
 
 // A solid of layers normal to x: I_xy varies along its u (= x), I_zx along its v (= x), I_yz is
@@ -270,6 +334,7 @@ TEST(LazySolid, RejectsBadOptions) {
   expectBad("passes", [](LazySolidOptions& o) { o.passes = -1; });
   expectBad("coarsestPasses", [](LazySolidOptions& o) { o.coarsestPasses = 9; });
   expectBad("trilinearLevels", [](LazySolidOptions& o) { o.trilinearLevels = -1; });
+  expectBad("gridCellSize", [](LazySolidOptions& o) { o.gridCellSize = 3; });
   expectBad("subpassGrid", [](LazySolidOptions& o) { o.subpassGrid = 3; });
   expectBad("subpartSize", [](LazySolidOptions& o) { o.subpartSize = 0; });
   expectBad("candidateCount", [](LazySolidOptions& o) { o.candidateCount = 0; });

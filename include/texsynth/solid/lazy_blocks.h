@@ -59,6 +59,13 @@ struct WorkSet {
   std::vector<BlockKey> keys;
   std::vector<WorkBlock> blocks;
   std::vector<std::int32_t> lastLayer;
+  // Grid scheme: each block's triples and colours when the current phase began (what a
+  // correction reads of voxels outside its own cell); empty otherwise.
+  struct PhaseStart {
+    TripleBlock triples;
+    std::array<float, kBlockVoxels * kMaxChannels> colors;
+  };
+  std::vector<PhaseStart> phaseStart;
   std::unordered_map<BlockKey, std::int32_t> index;
 
   explicit WorkSet(std::vector<BlockKey> sortedKeys);
@@ -78,9 +85,23 @@ struct WorkSet {
 // Replacing this (history windows, dual grids) changes only here.
 struct LazyDependencyPlan {
   std::vector<std::vector<BlockKey>> layers;
+  // The dual-grid scheme (§5.3, planGridLevel) instead: layers = {all blocks, delivered
+  // blocks}, and the M^3 cells each phase corrects (keys as blockKey of cell indices).
+  bool gridScheme = false;
+  int cellSize = 0;
+  std::vector<BlockKey> primaryCells, dualCells;
 };
 // stepClasses: the voxel class of each correction step (-1 = all voxels, see correctStep).
 LazyDependencyPlan planLevel(const std::vector<BlockKey>& deliver, const std::vector<int>& stepClasses, int readRadius);
+// One level's plan under grid / dual-grid correction (§5.3): the voxels are divided into M^3
+// cells (primary: [cM, cM + M), dual: shifted by M/2); during a phase a correction reads the
+// current state of voxels in its own cell and the phase's starting state of all others, so
+// nothing outside a cell's reach leaks in. The dual phase corrects every dual cell touching the
+// delivered blocks and reads the primary phase's result up to readRadius around them; the
+// primary phase corrects every primary cell touching that; both read the upsampled state up to
+// readRadius around the primary cells. The dependent set grows by about 2 (M + readRadius) per
+// side, whatever the number of passes and subpasses. dualPhase false: primary cells only.
+LazyDependencyPlan planGridLevel(const std::vector<BlockKey>& deliver, int cellSize, int readRadius, bool dualPhase);
 // Sorted, unique parent blocks (the coarser level) of `blocks`: block b reads parents in b/2.
 std::vector<BlockKey> parentBlocks(const std::vector<BlockKey>& blocks);
 // Everything one level's kernels need.
@@ -114,11 +135,23 @@ void upsampleBlock(const LevelContext& ctx, const BlockCache& parents, WorkBlock
 // Frames and colours of a block whose triples are set.
 void finishBlock(const LevelContext& ctx, WorkBlock& block);
 
+// One phase (primary or dual) of grid correction: cells [cM - shift, cM - shift + M) per axis,
+// and per block of the work set the voxels (bit per slot) this phase corrects.
+struct GridPhase {
+  int cellSize = 0, shift = 0;
+  std::vector<std::uint64_t> correct;
+};
+// The phase over `cells` (sorted keys of cell indices), with `set.phaseStart` taken now.
+GridPhase beginGridPhase(WorkSet& set, const std::vector<BlockKey>& cells, int cellSize, int shift);
+
 // Correction step `step` (1-based) in place: every block with lastLayer >= step corrects its
 // voxels of class `voxelClass` (x mod s, y mod s, z mod s as bits 0..2; -1 = all voxels) from
 // the state before the step (all results are computed before any is written). Voxels that would
 // read a stale or missing block are left alone (they lie outside the exact planned region).
 // Returns the number of corrected voxels.
-std::int64_t correctStep(const LevelContext& ctx, WorkSet& set, int step, int s, int voxelClass);
+// With a grid phase, the phase's voxels are corrected instead, reading the phase's start state
+// of voxels outside their own cell.
+std::int64_t correctStep(const LevelContext& ctx, WorkSet& set, int step, int s, int voxelClass,
+                         const GridPhase* phase = nullptr);
 
 }  // namespace texsynth::lazy
