@@ -82,7 +82,6 @@ struct WorkSet {
 // readRadius - 1 on a side whose outermost voxel is of another class (s = 2). Reaches add up in
 // voxels per side and are rounded up to blocks once per layer; voxels of a layer's blocks outside
 // the exact region may read stale or missing data: they are never read by what is delivered.
-// Replacing this (history windows, dual grids) changes only here.
 struct LazyDependencyPlan {
   std::vector<std::vector<BlockKey>> layers;
   // The dual-grid scheme (§5.3, planGridLevel) instead: layers = {all blocks, delivered

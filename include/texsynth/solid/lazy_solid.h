@@ -8,10 +8,11 @@
 // triples gathered from the neighbours.
 //
 // Determinism: a voxel's triple depends only on (seed, voxel, level, pass). A request is planned
-// finest to coarsest as sets of 4^3-voxel blocks, each level grown by its full correction reach
-// (the standard pass/subpass scheme; history windows and dual grids, §5, would change only
-// LazyDependencyPlan), so the same voxel gets the same triple whatever was requested, for any
-// thread count. Finished blocks of every level are cached and reused by later requests.
+// finest to coarsest as sets of 4^3-voxel blocks: under the standard pass/subpass scheme each
+// level grows by its full correction reach; under dual-grid correction (§5.3, the default above
+// the coarsest level) by whole M^3 cells plus the read radius. So the same voxel gets the same
+// triple whatever was requested, for any thread count. Finished blocks of every level are cached
+// and reused by later requests.
 #include <cstdint>
 #include <functional>
 #include <memory>
