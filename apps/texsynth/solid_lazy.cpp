@@ -95,6 +95,7 @@ json lazyStats(const LazyBuild& build) {
       levels.push_back({{"level", l},
                         {"voxels_synthesized", st.voxelsSynthesized},
                         {"corrections", st.corrections},
+                        {"comparisons", st.comparisons},
                         {"blocks_cached", st.blocksCached},
                         {"seconds", st.seconds}});
     }

@@ -8,6 +8,7 @@
 // vectorized bound rejects most of them before the exact (ordered) distance.
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <bit>
 #include <cmath>
 #include <limits>
@@ -139,6 +140,8 @@ class VoxelCorrector {
     if (integrated_) taps_.resize(std::size_t(3 * n_ * n_)), walk_.resize(std::size_t(n_));
   }
 
+  std::int64_t comparisons() const { return comparisons_; }
+
   // Corrects voxel `slot` of `self` (the centre block of `around`) into `out`; false (and `out`
   // untouched) if it would read a block that may not be read.
   bool correct(const BlockNeighborhood& around, const WorkBlock& self, int slot, const GridPhase* phase,
@@ -169,6 +172,7 @@ class VoxelCorrector {
     const CoordinateTriple current = self.triples[std::size_t(slot)];
     CoordinateTriple best = current;
     float bestDistance = distance(current, std::numeric_limits<float>::infinity());
+    ++comparisons_;
     seen_.clear();
     seen_.insert(current);
     const CandidateTriples& candidates = *ctx_.triples;
@@ -189,6 +193,7 @@ class VoxelCorrector {
         for (int j = 0; j < candidates.count; ++j) {
           // A triple seen before cannot win now: it lost (or tied) against a best no worse.
           if (!std::isfinite(errors[j]) || !seen_.insert(triples[j])) continue;
+          ++comparisons_;
           if (surelyNotBelow(triples[j], bestDistance)) continue;
           const float dist = distance(triples[j], bestDistance);
           if (dist < bestDistance) bestDistance = dist, best = triples[j];
@@ -346,6 +351,7 @@ class VoxelCorrector {
 
   const LevelContext& ctx_;
   int n_, r_;
+  std::int64_t comparisons_ = 0;  // neighbourhood comparisons (candidates measured), all voxels
   bool integrated_;
   int readRadius_;
   float reach_;  // largest integrated tap offset, sqrt(2) N/2
@@ -362,8 +368,8 @@ class VoxelCorrector {
 
 }  // namespace
 
-std::int64_t correctStep(const LevelContext& ctx, WorkSet& set, int step, int s, int voxelClass,
-                         const GridPhase* phase) {
+StepCounts correctStep(const LevelContext& ctx, WorkSet& set, int step, int s, int voxelClass,
+                       const GridPhase* phase) {
   const int radius = ctx.readRadius();
   std::vector<std::int32_t> targets;
   for (std::size_t i = 0; i < set.keys.size(); ++i)
@@ -371,6 +377,7 @@ std::int64_t correctStep(const LevelContext& ctx, WorkSet& set, int step, int s,
   // Results first (reading only the state before the step), then written back.
   std::vector<CoordinateTriple> results(targets.size() * kBlockVoxels);
   std::vector<std::uint64_t> corrected(targets.size(), 0);  // bit per slot
+  std::atomic<std::int64_t> comparisons{0};
   parallelForChunks(0, std::int64_t(targets.size()), kBlocksPerChunk, [&](std::int64_t begin, std::int64_t end) {
     auto corrector = std::make_unique<VoxelCorrector>(ctx);
     for (std::int64_t i = begin; i < end; ++i) {
@@ -387,6 +394,7 @@ std::int64_t correctStep(const LevelContext& ctx, WorkSet& set, int step, int s,
           corrected[std::size_t(i)] |= std::uint64_t(1) << slot;
       }
     }
+    comparisons += corrector->comparisons();
   });
   parallelForChunks(0, std::int64_t(targets.size()), kBlocksPerChunk, [&](std::int64_t begin, std::int64_t end) {
     for (std::int64_t i = begin; i < end; ++i) {
@@ -399,9 +407,10 @@ std::int64_t correctStep(const LevelContext& ctx, WorkSet& set, int step, int s,
       }
     }
   });
-  std::int64_t total = 0;
-  for (std::uint64_t bits : corrected) total += std::popcount(bits);
-  return total;
+  StepCounts counts;
+  for (std::uint64_t bits : corrected) counts.corrections += std::popcount(bits);
+  counts.comparisons = comparisons;
+  return counts;
 }
 
 }  // namespace texsynth::lazy

@@ -25,6 +25,12 @@ struct LazySolid::Impl {
 
 namespace {
 
+LazyLevelStats& operator+=(LazyLevelStats& stats, const StepCounts& counts) {
+  stats.corrections += counts.corrections;
+  stats.comparisons += counts.comparisons;
+  return stats;
+}
+
 constexpr int kMaxVoxelCoordinate = 1 << 19;
 constexpr std::int64_t kInitChunk = 16;
 
@@ -248,14 +254,14 @@ void LazySolid::synthesizeBlocks(std::vector<BlockKey> blocks, Progress& progres
                            phaseIndex == 0 ? 0 : plan.cellSize / 2);
         for (int pass = 0; pass < (phaseIndex == 0 ? primaryPasses : dualPasses); ++pass)
           for (int voxelClass : subpassClasses(options_.subpassGrid))
-            stats.corrections += correctStep(ctx, current, step++, options_.subpassGrid, voxelClass, &phase);
+            stats += correctStep(ctx, current, step++, options_.subpassGrid, voxelClass, &phase);
       }
       current.phaseStart.clear();
     } else {
       for (std::size_t i = 1; i < plan.layers.size(); ++i)
         for (BlockKey key : plan.layers[i]) current.lastLayer[std::size_t(current.indexOf(key))] = std::int32_t(i);
       for (std::size_t i = 0; i < stepClasses.size(); ++i)
-        stats.corrections += correctStep(ctx, current, int(i) + 1, options_.subpassGrid, stepClasses[i]);
+        stats += correctStep(ctx, current, int(i) + 1, options_.subpassGrid, stepClasses[i]);
     }
     BlockCache& cache = impl_->caches[std::size_t(l)];
     for (BlockKey key : plan.layers.back())

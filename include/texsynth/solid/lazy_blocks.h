@@ -147,10 +147,13 @@ GridPhase beginGridPhase(WorkSet& set, const std::vector<BlockKey>& cells, int c
 // voxels of class `voxelClass` (x mod s, y mod s, z mod s as bits 0..2; -1 = all voxels) from
 // the state before the step (all results are computed before any is written). Voxels that would
 // read a stale or missing block are left alone (they lie outside the exact planned region).
-// Returns the number of corrected voxels.
+// Returns the number of corrected voxels and of neighbourhood comparisons.
 // With a grid phase, the phase's voxels are corrected instead, reading the phase's start state
 // of voxels outside their own cell.
-std::int64_t correctStep(const LevelContext& ctx, WorkSet& set, int step, int s, int voxelClass,
-                         const GridPhase* phase = nullptr);
+struct StepCounts {
+  std::int64_t corrections = 0, comparisons = 0;
+};
+StepCounts correctStep(const LevelContext& ctx, WorkSet& set, int step, int s, int voxelClass,
+                       const GridPhase* phase = nullptr);
 
 }  // namespace texsynth::lazy

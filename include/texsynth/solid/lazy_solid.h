@@ -103,6 +103,7 @@ using LazyOrientation = std::function<Quatf(int level, const Vec3f& finestPositi
 struct LazyLevelStats {
   std::int64_t voxelsSynthesized = 0;  // voxels upsampled / initialized (incl. margins)
   std::int64_t corrections = 0;        // voxel corrections (one per voxel per pass)
+  std::int64_t comparisons = 0;        // neighbourhood comparisons (distinct candidates measured)
   std::int64_t blocksCached = 0;       // finished 4^3 blocks now in the cache
   double seconds = 0;                  // wall time spent on the level
 };
