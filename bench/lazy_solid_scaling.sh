@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Lazy solid synthesis at scale: full volumes (the unit cube at RES³, one exemplar tile per 128
 # voxels) and whole mesh surfaces (every voxel the surface passes through, `--surface R`), each
-# with wall time, voxels/s, peak memory and the per-level voxels and corrections of `--stats`.
+# with wall time, voxels/s, peak memory and the per-level voxels, corrections, neighbourhood
+# comparisons and seconds of `--stats`.
 # Usage: bench/lazy_solid_scaling.sh [BUILD_DIR] [OUTPUT_DIR] [--volume RES]... [--surface RES]...
 #        [--mesh MESH] [--exemplar PAT] [-- extra lazy flags]
 # Defaults: --volume 128 --surface 256, the bunny, pink_marble, the paper's defaults.
@@ -47,13 +48,14 @@ run() {  # label voxels stats -- texsynth args
   python3 - "$stats" <<'PY'
 import json, sys
 levels = json.load(open(sys.argv[1]))["lazy"][0]["levels"]
-print(" " + " / ".join(f"{l['voxels_synthesized'] / 1e6:.1f}M, {l['corrections'] / 1e6:.1f}M, {l['seconds']:.0f} s" for l in levels) + " |")
+print(" " + " / ".join(f"{l['voxels_synthesized'] / 1e6:.1f}M, {l['corrections'] / 1e6:.1f}M, "
+                       f"{l.get('comparisons', 0) / 1e6:.0f}M, {l['seconds']:.0f} s" for l in levels) + " |")
 PY
 }
 
 echo "# Lazy solid synthesis at scale, $(nproc) cores, $(basename "$exemplar" .pat) ${extra[*]:+(flags: ${extra[*]})}"
 echo
-echo "| request | requested voxels | time | voxels/s | peak memory | per level, coarsest first: voxels synthesized, corrections, time |"
+echo "| request | requested voxels | time | voxels/s | peak memory | per level, coarsest first: voxels synthesized, corrections, neighbourhood comparisons, time |"
 echo "|---|---:|---:|---:|---:|---|"
 for r in "${volumes[@]}"; do
   run "volume ${r}³" $((r * r * r)) "$out/volume_$r.json" -- solid "$exemplar" --method lazy --tiles "$(awk -v r="$r" 'BEGIN { print r / 128 }')" \
