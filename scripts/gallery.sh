@@ -42,4 +42,12 @@ rm "$out/crop.png"
 lazy=(solid $p/Fabric/burlap.pat --method lazy --mesh $m/bunny00.off --tiles 2 --cut z=0.55 --render-size 500 --views 2 --quiet)
 "$t" "${lazy[@]}" --render "$out/lazy_bunny_burlap_identity.jpg"
 "$t" "${lazy[@]}" --sketch examples/sketches/bunny.json --render "$out/lazy_bunny_burlap_sketch.jpg"
+# The standard scheme next to dual-grid correction (about 6.5 and 2 minutes).
+for scheme in --no-dual-grid --dual-grid; do
+  "$t" solid $p/Fabric/burlap.pat --method lazy --mesh $m/bunny00.off --tiles 1 --cut z=0.55 --render-size 400 --views 1 \
+    --quiet $scheme --render "$out/lazy_scheme$scheme.png"
+done
+gmic -v - "$out/lazy_scheme--no-dual-grid.png" "$out/lazy_scheme--dual-grid.png" append x \
+  -o "$out/lazy_bunny_burlap_standard_vs_dual.jpg,85"
+rm "$out/lazy_scheme--no-dual-grid.png" "$out/lazy_scheme--dual-grid.png"
 ls -la "$out"
