@@ -50,4 +50,12 @@ done
 gmic -v - "$out/lazy_scheme--no-dual-grid.png" "$out/lazy_scheme--dual-grid.png" append x \
   -o "$out/lazy_bunny_burlap_standard_vs_dual.jpg,85"
 rm "$out/lazy_scheme--no-dual-grid.png" "$out/lazy_scheme--dual-grid.png"
+# The cow, identity field then its sketch (about 1 and 6 minutes).
+for v in identity sketch; do
+  extra=(); [ $v = sketch ] && extra=(--sketch examples/sketches/cow.json)
+  "$t" solid $p/Fabric/burlap.pat --method lazy --mesh $m/cow.off --tiles 1.5 --cut x=0.5 --render-size 400 --views 1 \
+    --quiet "${extra[@]}" --render "$out/lazy_cow_$v.png"
+done
+gmic -v - "$out/lazy_cow_identity.png" "$out/lazy_cow_sketch.png" append x -o "$out/lazy_cow_burlap_identity_vs_sketch.jpg,85"
+rm "$out/lazy_cow_identity.png" "$out/lazy_cow_sketch.png"
 ls -la "$out"
