@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <mutex>
+#include <optional>
 
 #include "solid_args.h"
 #include "texsynth/core/atomic_file.h"
@@ -94,10 +95,8 @@ void checkOutputs(const SolidArgs& args) {
                                         std::to_string(imageOutputs) +
                                         " image output(s): give one -o image per --slice, in order");
   if (!args.render.empty() && args.mesh.empty()) throw ParameterError("--render", "needs --mesh");
-  if (!args.cut.empty()) {
-    if (args.render.empty()) throw ParameterError("--cut", "is a view of --render: give --render too");
-    parseAxisPosition(args.cut, "--cut", true);
-  }
+  if (!args.cut.empty() && args.render.empty())
+    throw ParameterError("--cut", "is a view of --render: give --render too");
   if (args.surface > 0 && args.mesh.empty()) throw ParameterError("--surface", "needs --mesh");
   if (args.outputs.empty() && args.render.empty() && args.surface == 0)
     throw ParameterError("--output", "nothing to write: give -o (mesh, slice or volume), --render or --surface");
@@ -159,6 +158,8 @@ void runSolid(const SolidArgs& args, const GlobalOptions& globals) {
   checkOutputs(args);
   std::vector<std::pair<int, float>> slices;
   for (const std::string& s : args.slices) slices.push_back(parseAxisPosition(s, "--slice", false));
+  std::optional<std::pair<int, float>> cut;  // parsed before any work, so a typo costs nothing
+  if (!args.cut.empty()) cut = parseAxisPosition(args.cut, "--cut", true);
   json report = {{"exemplar", args.exemplars}, {"method", args.method}, {"seed", globals.seed}};
   auto clock = std::chrono::steady_clock::now();
   auto lap = [&clock] {
@@ -228,8 +229,8 @@ void runSolid(const SolidArgs& args, const GlobalOptions& globals) {
         colors = solid->evaluateColors(points, normals);
       };
     Image image = renderViews(mesh, &colorAt, views, options);
-    if (!args.cut.empty()) {  // the solid inside: a cap across the cut, coloured like the surface
-      const auto [axis, fraction] = parseAxisPosition(args.cut, "--cut", true);
+    if (cut) {  // the solid inside: a cap across the cut, coloured like the surface
+      const auto [axis, fraction] = *cut;
       const MeshCut opened = cutOpenMesh(coloredCopy(mesh, options.defaultColor), axis, fraction,
                                          box.size().maxCoeff() / 512.0f, options.defaultColor);
       image = sideBySide({image, renderViews(opened.mesh, &colorAt, {cutViewAngles(axis)}, options)});
