@@ -8,42 +8,30 @@
 # Defaults: --volume 128 --surface 256, the bunny, pink_marble, the paper's defaults.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
-build=${1:-build}
-out=${2:-$(mktemp -d)}
-shift $(($# < 2 ? $# : 2))
-volumes=() surfaces=() extra=()
-mesh=.data/meshes/bunny00.off
-exemplar=/usr/share/gimp/2.0/patterns/Stone/pink_marble.pat
+source bench/lazy_bench_args.sh
+volumes=() surfaces=()
+set -- "${rest[@]}"
 while [ $# -gt 0 ]; do
   case $1 in
     --volume) volumes+=("$2"); shift 2 ;;
     --surface) surfaces+=("$2"); shift 2 ;;
-    --mesh) mesh=$2; shift 2 ;;
-    --exemplar) exemplar=$2; shift 2 ;;
-    --) shift; extra=("$@"); break ;;
     *) echo "unknown argument: $1" >&2; exit 2 ;;
   esac
 done
 [ ${#volumes[@]} -eq 0 ] && [ ${#surfaces[@]} -eq 0 ] && volumes=(128) surfaces=(256)
-texsynth="$build/bin/texsynth"
-[ -x "$texsynth" ] || { echo "build first: $texsynth is missing" >&2; exit 1; }
-[ -f "$exemplar" ] || { echo "exemplar $exemplar is missing (scripts/install-deps.sh installs gimp-data)" >&2; exit 1; }
-[ -f "$mesh" ] || { echo "mesh $mesh is missing (scripts/install-deps.sh extracts CGAL's meshes)" >&2; exit 1; }
-mkdir -p "$out"
-export TEXSYNTH_CACHE="$out/cache"
-"$texsynth" solid "$exemplar" --method lazy --slice z=0.5 --resolution 4 -o "$out/warmup.png" --quiet "${extra[@]}"
+lazy_bench_prepare
 
-# Runs one request under /usr/bin/time; prints a table row and the per-level rows.
+# Runs one request; prints a table row (peak memory: the process's, from --stats) and the per-level rows.
 run() {  # label voxels stats -- texsynth args
   local label=$1 voxels=$2 stats=$3
   shift 4
   local start end seconds rss
   start=$(date +%s.%N)
-  /usr/bin/time -f "%M" -o "$stats.rss" "$texsynth" "$@" --stats "$stats" --quiet "${extra[@]}"
+  "$texsynth" "$@" --stats "$stats" --quiet "${extra[@]}"
   end=$(date +%s.%N)
   seconds=$(awk -v a="$start" -v b="$end" 'BEGIN { printf "%.1f", b - a }')
   [ "$voxels" = surface ] && voxels=$(python3 -c "import json; print(json.load(open('$stats'))['surface']['voxels'])")
-  rss=$(awk '{ printf "%.0f", $1 / 1024 }' "$stats.rss")
+  rss=$(python3 -c "import json; print(round(json.load(open('$stats'))['peak_rss_mib']))")
   printf "| %s | %s | %s s | %.0f | %s MiB |" "$label" "$voxels" "$seconds" "$(awk -v v="$voxels" -v s="$seconds" 'BEGIN { print v / s }')" "$rss"
   python3 - "$stats" <<'PY'
 import json, sys

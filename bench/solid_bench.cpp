@@ -11,6 +11,7 @@
 #include "texsynth/core/random.h"
 #include "texsynth/io/mesh_io.h"
 #include "texsynth/render/primitives.h"
+#include "texsynth/solid/lazy_blocks.h"
 #include "texsynth/solid/lazy_solid.h"
 #include "texsynth/solid/solid_consumers.h"
 #include "texsynth/solid/tile_blend_solid.h"
@@ -136,6 +137,33 @@ BENCHMARK(BM_LazySolidVolume)
     ->Iterations(1)
     ->Unit(benchmark::kSecond)
     ->UseRealTime();
+
+// How close a level's block plan comes to the exact dependent set its history windows give
+// (lazy::windowDependencies), for one delivered 4^3 block at a finer level with the paper's
+// defaults (N = 9, 2 passes of 8 subpasses, no field: window radius 4). range(0) = 1: dual-grid
+// correction (M = 12); 0: the standard scheme. Counters: the exact voxels needed from upsampling,
+// the voxels the plan synthesizes, and their ratio; the time is that of the exact computation.
+void BM_LazyPlanVersusWindows(benchmark::State& state) {
+  LazySolidOptions options;
+  const bool grid = state.range(0) == 1;
+  const int radius = 4;
+  const lazy::LevelSchedule schedule = lazy::levelSchedule(options, 1, grid);
+  std::vector<Vec3i> deliver;
+  for (int slot = 0; slot < lazy::kBlockVoxels; ++slot) deliver.push_back({slot % 4, slot / 4 % 4, slot / 16});
+  std::size_t exact = 0;
+  for (auto _ : state) exact = lazy::windowDependencies(schedule, deliver, radius).front().size();
+  std::vector<int> classes;
+  for (const lazy::CorrectionStep& step : schedule.steps) classes.push_back(step.voxelClass);
+  const std::vector<lazy::BlockKey> blocks = {lazy::blockKey(0, 0, 0)};
+  const lazy::LazyDependencyPlan plan = grid ? lazy::planGridLevel(blocks, options.gridCellSize, radius, true)
+                                             : lazy::planLevel(blocks, classes, radius);
+  const double planned = double(plan.layers.front().size()) * lazy::kBlockVoxels;
+  state.counters["exact_voxels"] = double(exact);
+  state.counters["planned_voxels"] = planned;
+  state.counters["planned_per_exact"] = planned / double(exact);
+  state.SetLabel(grid ? "dual grid" : "standard scheme");
+}
+BENCHMARK(BM_LazyPlanVersusWindows)->Arg(0)->Arg(1)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
 
 }  // namespace
 

@@ -1,10 +1,12 @@
 #include "cli_common.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <type_traits>
 #include <vector>
@@ -113,6 +115,23 @@ std::string defaultCacheDirectory() {
   if (const char* home = std::getenv("HOME"); home && *home) return std::string(home) + "/.cache/texsynth";
   return (std::filesystem::temp_directory_path() / "texsynth-cache").string();
 }
+
+namespace {
+double processPeak = -1;
+}
+
+double takePeakResidentMiB() {
+  double peak = -1;
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+    if (line.rfind("VmHWM:", 0) == 0) peak = std::strtod(line.c_str() + 6, nullptr) / 1024.0;  // kB
+  std::ofstream("/proc/self/clear_refs") << "5";  // restart the peak from the current use
+  processPeak = std::max(processPeak, peak);
+  return peak;
+}
+
+double processPeakResidentMiB() { return processPeak; }
 
 void say(const GlobalOptions& globals, const std::string& message) {
   if (!globals.quiet) std::fprintf(stderr, "%s\n", message.c_str());

@@ -61,6 +61,13 @@ void printJson(const nlohmann::json& document);
 std::string defaultCacheDirectory();
 
 // Short human-readable message on stderr, unless --quiet.
+// Per-request peak memory: the process's peak resident memory (MiB, Linux VmHWM) since the last
+// call, after which the peak starts over from the current use (so one request's peak is not
+// hidden by an earlier one's); -1 where unknown. Call once before the first request.
+// processPeakResidentMiB: the largest peak over all calls so far.
+double takePeakResidentMiB();
+double processPeakResidentMiB();
+
 void say(const GlobalOptions& globals, const std::string& message);
 
 // The subcommands; each lives in its own cmd_<name>.cpp.

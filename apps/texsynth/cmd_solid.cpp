@@ -116,7 +116,7 @@ std::unique_ptr<SolidTexture> makeSolid(const SolidArgs& args, const Mesh& mesh,
   SolidPlacement placement = fitPlacement(box, tileSide, args.tiles);
   if (args.method == "lazy") {
     if (volumeExemplar) throw ParameterError("--method", "lazy takes 2D exemplars, not a volume");
-    lazy = makeLazySolid(args, mesh, placement, seed, report);
+    lazy = makeLazySolid(args, mesh, box, placement, seed, report);
     return std::move(lazy.texture);
   }
   if (args.exemplars.size() > 1)
@@ -180,6 +180,9 @@ void runSolid(const SolidArgs& args, const GlobalOptions& globals) {
   LazyBuild lazy;
   std::unique_ptr<SolidTexture> solid = makeSolid(args, mesh, box, globals.seed, report, lazy);
   report["setup_seconds"] = lap();
+  report["setup_peak_rss_mib"] = takePeakResidentMiB();
+  if (!lazy.parts.empty())  // the work so far: the coarsest level over the box (separate from what follows)
+    report["coarsest_level"] = {{"seconds", report["coarsest_level_seconds"]}, {"lazy", lazyStats(lazy)}};
   if (args.surface > 0) {  // the whole surface at a resolution: synthesized and evaluated, for timing
     std::vector<Vec3f> points = surfaceVoxelCenters(mesh, box, args.surface);
     solid->prepare(points);
@@ -188,7 +191,10 @@ void runSolid(const SolidArgs& args, const GlobalOptions& globals) {
     report["surface"] = {{"resolution", args.surface},
                          {"voxels", points.size()},
                          {"synthesis_seconds", prepared},
-                         {"lookup_seconds", lap()}};
+                         {"lookup_seconds", lap()},
+                         {"peak_rss_mib", takePeakResidentMiB()}};
+    // What the surface cost per level, apart from the requests that follow (the totals are "lazy").
+    if (!lazy.parts.empty()) report["surface"]["lazy"] = lazyStats(lazy);
   }
 
   auto progress = makeProgress(globals);
@@ -213,7 +219,8 @@ void runSolid(const SolidArgs& args, const GlobalOptions& globals) {
       colorMeshVertices(colored, *solid);
       writeMesh(out, colored);
     }
-    report["outputs"].push_back({{"file", out}, {"seconds", lap()}});
+    report["outputs"].push_back({{"file", out}, {"seconds", lap()}, {"peak_rss_mib", takePeakResidentMiB()}});
+    if (!lazy.parts.empty()) report["outputs"].back()["lazy"] = lazyStats(lazy);  // totals so far
     progress->advance(1);
   }
   if (!args.render.empty()) {
@@ -241,6 +248,8 @@ void runSolid(const SolidArgs& args, const GlobalOptions& globals) {
   }
   progress->end();
   if (!lazy.parts.empty()) report["lazy"] = lazyStats(lazy);
+  takePeakResidentMiB();
+  report["peak_rss_mib"] = processPeakResidentMiB();
   if (!args.stats.empty()) writeFileAtomically(args.stats, report.dump(2) + "\n");
   if (globals.json)
     printJson(report);
@@ -336,9 +345,9 @@ Command registerSolidCommand(CLI::App& app, const GlobalOptions& globals) {
                 "lazy: dual-grid correction (paper §5.3, on by default) on all levels but the coarsest: corrections "
                 "read only their own MxMxM cell's current state, so a request depends on far fewer voxels; "
                 "--no-dual-grid: the standard pass scheme");
-  sub->add_option("--grid-cell", args->gridCell, "lazy with --dual-grid: the cell side M in voxels (paper: 10-15)")
+  sub->add_option("--grid-cell", args->gridCell, "lazy with --dual-grid: the cell side M in voxels, even (paper: 10-15)")
       ->capture_default_str()
-      ->check(CLI::Range(4, 64));
+      ->check(CLI::Range(4, 32));
   sub->add_option("--sketch", args->sketch,
                   "lazy with --mesh: design the rotation field from these sketch curves first (as `texsynth field`, "
                   "docs/sketch-format.md); instead of --field")

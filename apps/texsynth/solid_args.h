@@ -33,14 +33,15 @@ struct SolidArgs {
 };
 
 // --method lazy: one LazySolid on the exemplars (one for all planes, or XY YZ ZX), guided by
-// --field or a field designed from --sketch on the mesh if given; with --inner and a mesh, a second one fills everything deeper than --shell
-// (a fraction of the mesh's bounding-box diagonal) below the surface.
+// --field or a field designed from --sketch on the mesh if given; with --inner and a mesh, a second one fills
+// everything deeper than --shell (a fraction of the mesh's bounding-box diagonal) below the surface. The coarsest level
+// is synthesized over all of `box` up front, for every later request to reuse.
 struct LazyBuild {
   std::unique_ptr<SolidTexture> texture;
   std::vector<std::pair<std::string, std::shared_ptr<LazySolid>>> parts;  // name, synthesis
 };
-LazyBuild makeLazySolid(const SolidArgs& args, const Mesh& mesh, const SolidPlacement& placement, std::uint64_t seed,
-                        nlohmann::json& report);
+LazyBuild makeLazySolid(const SolidArgs& args, const Mesh& mesh, const Box3f& box, const SolidPlacement& placement,
+                        std::uint64_t seed, nlohmann::json& report);
 
 // Per-level work of every lazy part, for --stats.
 nlohmann::json lazyStats(const LazyBuild& build);

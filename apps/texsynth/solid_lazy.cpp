@@ -1,5 +1,6 @@
 // texsynth solid --method lazy: building the lazy synthesis (exemplars, field, regions) and
 // reporting its work.
+#include <chrono>
 #include <cmath>
 
 #include "solid_args.h"
@@ -34,8 +35,8 @@ std::shared_ptr<LazySolid> makeSynthesis(const std::vector<std::string>& exempla
 
 }  // namespace
 
-LazyBuild makeLazySolid(const SolidArgs& args, const Mesh& mesh, const SolidPlacement& placement, std::uint64_t seed,
-                        json& report) {
+LazyBuild makeLazySolid(const SolidArgs& args, const Mesh& mesh, const Box3f& box, const SolidPlacement& placement,
+                        std::uint64_t seed, json& report) {
   LazySolidOptions options;
   options.levels = args.levels;
   options.passes = args.passes;
@@ -65,6 +66,16 @@ LazyBuild makeLazySolid(const SolidArgs& args, const Mesh& mesh, const SolidPlac
   auto outer = makeSynthesis(args.exemplars, options, orientation);
   build.parts.push_back({"shell", outer});
   auto outerTexture = std::make_shared<LazySolidTexture>(outer, placement);
+  // The coarsest level over the whole box once (as the paper does for its volume): every
+  // surface, slice or cut inside then reuses it.
+  const auto coarsest = [&](LazySolidTexture& texture) {
+    const auto started = std::chrono::steady_clock::now();
+    texture.prepareDomain(box);
+    report["coarsest_level_seconds"] =
+        report.value("coarsest_level_seconds", 0.0) +
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  };
+  coarsest(*outerTexture);
   if (args.inner.empty()) {
     build.texture = std::make_unique<LazySolidTexture>(outer, placement);
     return build;
@@ -80,9 +91,10 @@ LazyBuild makeLazySolid(const SolidArgs& args, const Mesh& mesh, const SolidPlac
   build.parts.push_back({"core", inner});
   const float depth = args.shell * mesh.bounds().size().norm();
   report["shell_depth"] = depth;
+  auto innerTexture = std::make_shared<LazySolidTexture>(inner, placement);
+  coarsest(*innerTexture);
   build.texture = std::make_unique<RegionSolidTexture>(
-      std::vector<std::shared_ptr<SolidTexture>>{outerTexture, std::make_shared<LazySolidTexture>(inner, placement)},
-      surfaceShellRule(mesh, depth));
+      std::vector<std::shared_ptr<SolidTexture>>{outerTexture, innerTexture}, surfaceShellRule(mesh, depth));
   return build;
 }
 
@@ -97,7 +109,9 @@ json lazyStats(const LazyBuild& build) {
                         {"corrections", st.corrections},
                         {"comparisons", st.comparisons},
                         {"blocks_cached", st.blocksCached},
-                        {"seconds", st.seconds}});
+                        {"seconds", st.seconds},
+                        {"peak_working_mib", double(st.peakWorkingBytes) / (1 << 20)},
+                        {"cached_mib", double(st.cachedBytes) / (1 << 20)}});
     }
     parts.push_back({{"region", name}, {"levels", levels}});
   }

@@ -50,13 +50,18 @@ class BlockNeighborhood {
  public:
   BlockNeighborhood(const WorkSet& set, const Vec3i& block, int radius, int step)
       : set_(set), span_((kB - 1 + radius) / kB), side_(2 * span_ + 1) {
+    for (const WorkSet::Version& snapshot : set.snapshots) {
+      TS_CHECK(snapshot.version >= 0 && std::size_t(snapshot.version) < byVersion_.size());
+      byVersion_[std::size_t(snapshot.version)] = &snapshot.blocks;
+    }
     table_.resize(std::size_t(side_) * side_ * side_);
     for (int z = 0; z < side_; ++z)
       for (int y = 0; y < side_; ++y)
         for (int x = 0; x < side_; ++x) {
           const std::int32_t i =
               set.indexOf(blockKey(block.x() + x - span_, block.y() + y - span_, block.z() + z - span_));
-          table_[std::size_t((z * side_ + y) * side_ + x)] = i >= 0 && set.lastLayer[std::size_t(i)] >= step - 1 ? i : -1;
+          table_[std::size_t((z * side_ + y) * side_ + x)] =
+              i >= 0 && set.lastLayer[std::size_t(i)] >= step - 1 ? i : -1;
         }
   }
   // Voxel at `offset` from the voxel at `local` (0..kB-1 per axis) of the centre block, as
@@ -68,20 +73,24 @@ class BlockNeighborhood {
     return t * kBlockVoxels + ((u.z() % kB) * kB + u.y() % kB) * kB + u.x() % kB;
   }
   const WorkBlock& block(int located) const { return set_.blocks[index(located)]; }
-  // A located voxel's colours and triple: now, or as they were when the grid phase began.
-  const float* colors(int located, bool atPhaseStart) const {
+  // A located voxel's colours and triple: now (version < 0), or its snapshot of `version`.
+  const float* colors(int located, int version) const {
     const std::size_t slot = std::size_t(located % kBlockVoxels) * kMaxChannels;
-    return (atPhaseStart ? set_.phaseStart[index(located)].colors.data() : block(located).colors.data()) + slot;
+    return (version < 0 ? block(located).colors.data() : snapshot(version, located).colors.data()) + slot;
   }
-  const CoordinateTriple& triple(int located, bool atPhaseStart) const {
+  const CoordinateTriple& triple(int located, int version) const {
     const std::size_t slot = std::size_t(located % kBlockVoxels);
-    return atPhaseStart ? set_.phaseStart[index(located)].triples[slot] : block(located).triples[slot];
+    return version < 0 ? block(located).triples[slot] : snapshot(version, located).triples[slot];
   }
 
  private:
   std::size_t index(int located) const { return std::size_t(table_[std::size_t(located / kBlockVoxels)]); }
+  const WorkSet::Snapshot& snapshot(int version, int located) const {
+    return (*byVersion_[std::size_t(version)])[index(located)];
+  }
 
   const WorkSet& set_;
+  std::array<const std::vector<WorkSet::Snapshot>*, 16> byVersion_{};  // snapshots by version
   int span_, side_;
   std::vector<std::int32_t> table_;
 };
@@ -144,11 +153,12 @@ class VoxelCorrector {
 
   // Corrects voxel `slot` of `self` (the centre block of `around`) into `out`; false (and `out`
   // untouched) if it would read a block that may not be read.
-  bool correct(const BlockNeighborhood& around, const WorkBlock& self, int slot, const GridPhase* phase,
+  bool correct(const BlockNeighborhood& around, const WorkBlock& self, int slot, const StepReads& reads,
                CoordinateTriple& out) {
     setOffsets(self.frames[std::size_t(slot)]);
     const Vec3i local(slot % kB, slot / kB % kB, slot / (kB * kB));
-    setCell(self.origin + local, phase);
+    sources_ = reads.sourcesFor(self.origin + local);
+    windowRadius_ = reads.radius;
     // Integrated levels locate only the candidate sources here (the taps are sampled below).
     for (std::size_t i = integrated_ ? std::size_t(3 * n_ * n_) : 0; i < offsets_.size(); ++i)
       if ((located_[i] = around.locate(local, offsets_[i])) < 0) return false;
@@ -164,7 +174,7 @@ class VoxelCorrector {
           continue;
         }
         const std::size_t tap = std::size_t(p * taps + k);
-        const float* color = around.colors(located_[tap], outsideCell(offsets_[tap]));
+        const float* color = around.colors(located_[tap], versionAt(offsets_[tap]));
         for (int i = 0; i < c; ++i) *write++ = color[i];  // c is small: no memmove call
       }
       ctx_.planes[p]->pca.project(buffer_.data(), query_[p].data());
@@ -181,7 +191,7 @@ class VoxelCorrector {
       int proposals = 0;
       for (int k = 0; k < 9; ++k) {
         const std::size_t source = std::size_t(3 * taps + p * 9 + k);
-        const std::int32_t pixel = component(around.triple(located_[source], outsideCell(offsets_[source])), p);
+        const std::int32_t pixel = component(around.triple(located_[source], versionAt(offsets_[source])), p);
         // [T_P(v + d) - h P(d)]: the in-plane offset is (a, b) in the plane's (u, v).
         const int u = wrapIndex(std::int64_t(pixel % ctx_.width) - ctx_.spacing * kOffsets[k][0], ctx_.width);
         const int w = wrapIndex(std::int64_t(pixel / ctx_.width) - ctx_.spacing * kOffsets[k][1], ctx_.height);
@@ -219,19 +229,10 @@ class VoxelCorrector {
       for (const auto& d : kOffsets) offsets_[i++] = roundVector(frame * planeOffset(p, d[0], d[1]));
   }
 
-  // Grid correction: the voxel's own cell, [cellLo_, cellHi_] per axis, relative to the voxel.
-  void setCell(const Vec3i& voxel, const GridPhase* phase) {
-    gridded_ = phase != nullptr;
-    if (!gridded_) return;
-    for (int a = 0; a < 3; ++a) {
-      const int lo = floorDiv(voxel[a] + phase->shift, phase->cellSize) * phase->cellSize - phase->shift;
-      cellLo_[a] = lo - voxel[a];
-      cellHi_[a] = lo + phase->cellSize - 1 - voxel[a];
-    }
-  }
-  // True if the voxel at `offset` lies in another cell: its state at the phase start is read.
-  bool outsideCell(const Vec3i& offset) const {
-    return gridded_ && ((offset.array() < cellLo_.array()).any() || (offset.array() > cellHi_.array()).any());
+  // The version the voxel's history window reads at `offset` (-1: the neighbour's current state).
+  int versionAt(const Vec3i& offset) const {
+    const int d = 2 * windowRadius_ + 1;
+    return sources_[((offset.z() + windowRadius_) * d + (offset.y() + windowRadius_)) * d + offset.x() + windowRadius_];
   }
 
   // The frame of the voxel nearest `offset` (clamped to the read radius); null if unreadable.
@@ -299,7 +300,7 @@ class VoxelCorrector {
       if (w == 0.0f) continue;
       const int at = around.locate(local, corner0 + d);
       if (at < 0) return false;
-      const float* color = around.colors(at, outsideCell(corner0 + d));
+      const float* color = around.colors(at, versionAt(corner0 + d));
       for (int i = 0; i < c; ++i) out[i] += w * color[i];
     }
     return true;
@@ -359,8 +360,8 @@ class VoxelCorrector {
   std::vector<Vec3f> taps_, walk_;  // integrated tap offsets (3 N^2), one walk along an axis (N)
   std::vector<Vec3i> offsets_;
   std::vector<int> located_;
-  bool gridded_ = false;
-  Vec3i cellLo_ = Vec3i::Zero(), cellHi_ = Vec3i::Zero();
+  const std::int8_t* sources_ = nullptr;  // the voxel's read table (StepReads)
+  int windowRadius_ = 0;
   Mat3f frame_;
   bool valid_ = false;
   TripleSet seen_;
@@ -368,9 +369,14 @@ class VoxelCorrector {
 
 }  // namespace
 
-StepCounts correctStep(const LevelContext& ctx, WorkSet& set, int step, int s, int voxelClass,
+StepCounts correctStep(const LevelContext& ctx, WorkSet& set, int step, const StepReads& reads,
                        const GridPhase* phase) {
   const int radius = ctx.readRadius();
+  TS_CHECK(reads.radius >= radius);
+  const int s = reads.s, voxelClass = reads.voxelClass;
+  for (int version : reads.snapshotVersions)
+    TS_CHECK(std::any_of(set.snapshots.begin(), set.snapshots.end(),
+                         [&](const WorkSet::Version& v) { return v.version == version; }));
   std::vector<std::int32_t> targets;
   for (std::size_t i = 0; i < set.keys.size(); ++i)
     if (phase ? phase->correct[i] != 0 : set.lastLayer[i] >= step) targets.push_back(std::int32_t(i));
@@ -386,11 +392,9 @@ StepCounts correctStep(const LevelContext& ctx, WorkSet& set, int step, int s, i
       const BlockNeighborhood around(set, blockIndex(set.keys[index]), radius, step);
       for (int slot = 0; slot < kBlockVoxels; ++slot) {
         const Vec3i v = in.origin + Vec3i(slot % kB, slot / kB % kB, slot / (kB * kB));
-        if (voxelClass >= 0 &&
-            (wrapIndex(v.x(), s) | wrapIndex(v.y(), s) << 1 | wrapIndex(v.z(), s) << 2) != voxelClass)
-          continue;
+        if (voxelClass >= 0 && subpassClassOf(v, s) != voxelClass) continue;
         if (phase && !(phase->correct[index] >> slot & 1)) continue;
-        if (corrector->correct(around, in, slot, phase, results[std::size_t(i) * kBlockVoxels + std::size_t(slot)]))
+        if (corrector->correct(around, in, slot, reads, results[std::size_t(i) * kBlockVoxels + std::size_t(slot)]))
           corrected[std::size_t(i)] |= std::uint64_t(1) << slot;
       }
     }

@@ -1,5 +1,6 @@
 // Dependency planning of lazy solid synthesis: which 4^3 blocks each correction step of a level
-// must produce so that the delivered blocks are exact (the standard pass/subpass scheme).
+// must produce so that the delivered blocks are exact (the standard pass/subpass scheme and grid
+// correction), and the grid phases' voxels and history snapshots of a level's work set.
 #include <algorithm>
 
 #include "texsynth/core/error.h"
@@ -139,17 +140,12 @@ LazyDependencyPlan planGridLevel(const std::vector<BlockKey>& deliver, int cellS
   return plan;
 }
 
-GridPhase beginGridPhase(WorkSet& set, const std::vector<BlockKey>& cells, int cellSize, int shift) {
+GridPhase gridPhase(const WorkSet& set, const std::vector<BlockKey>& cells, int cellSize, int shift) {
   GridPhase phase;
-  phase.cellSize = cellSize;
-  phase.shift = shift;
   phase.correct.assign(set.blocks.size(), 0);
-  set.phaseStart.resize(set.blocks.size());
   parallelForChunks(0, std::int64_t(set.blocks.size()), 64, [&](std::int64_t begin, std::int64_t end) {
     for (std::int64_t i = begin; i < end; ++i) {
       const WorkBlock& block = set.blocks[std::size_t(i)];
-      set.phaseStart[std::size_t(i)].triples = block.triples;
-      set.phaseStart[std::size_t(i)].colors = block.colors;
       BlockKey lastCell = 0;
       bool lastIn = false, any = false;
       for (int slot = 0; slot < kBlockVoxels; ++slot) {
@@ -163,6 +159,24 @@ GridPhase beginGridPhase(WorkSet& set, const std::vector<BlockKey>& cells, int c
     }
   });
   return phase;
+}
+
+void WorkSet::takeSnapshot(int version) {
+  Version& taken = snapshots.emplace_back();
+  taken.version = version;
+  taken.blocks.resize(blocks.size());
+  parallelForChunks(0, std::int64_t(blocks.size()), 64, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t i = begin; i < end; ++i) {
+      taken.blocks[std::size_t(i)].triples = blocks[std::size_t(i)].triples;
+      taken.blocks[std::size_t(i)].colors = blocks[std::size_t(i)].colors;
+    }
+  });
+}
+
+void WorkSet::dropSnapshotsExcept(const std::vector<int>& versions) {
+  std::erase_if(snapshots, [&](const Version& s) {
+    return std::find(versions.begin(), versions.end(), s.version) == versions.end();
+  });
 }
 
 std::vector<BlockKey> parentBlocks(const std::vector<BlockKey>& blocks) {

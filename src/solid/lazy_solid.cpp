@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <numeric>
 #include <string>
 
 #include "texsynth/core/error.h"
@@ -42,11 +43,15 @@ int neighborhoodSizeOf(const LazySolidOptions& options, int level) {
   return options.neighborhoodSizes[std::min<std::size_t>(std::size_t(level), options.neighborhoodSizes.size() - 1)];
 }
 
-// The s^3 voxel classes (bits x | y << 1 | z << 2) in an order that alternates far-apart
-// classes, as L&H's 2D order alternates diagonals; s = 1: one step over all voxels.
-std::vector<int> subpassClasses(int s) {
-  if (s == 1) return {-1};
-  return {0, 7, 1, 6, 2, 5, 4, 3};
+// Memory accounting for --stats: a cached block is a hash-map node (key, triples, links); a
+// working block adds its key, index entry, colours and frames, its history snapshot if one is
+// taken, and room for one step's results.
+constexpr std::int64_t cachedBlockBytes = sizeof(BlockKey) + sizeof(TripleBlock) + 2 * sizeof(void*);
+std::int64_t workingBytes(const WorkSet& set) {
+  const std::int64_t perBlock = sizeof(WorkBlock) + sizeof(BlockKey) + sizeof(std::int32_t) + cachedBlockBytes +
+                                kBlockVoxels * sizeof(CoordinateTriple);
+  return std::int64_t(set.blocks.size()) * perBlock +
+         std::int64_t(set.snapshots.size() * set.blocks.size()) * std::int64_t(sizeof(WorkSet::Snapshot));
 }
 
 void removeCached(std::vector<BlockKey>& keys, const BlockCache& cache) {
@@ -66,8 +71,9 @@ void validateLazySolidOptions(const LazySolidOptions& options) {
           "must be in [0, 8], got " + std::to_string(options.passes));
   require(options.coarsestPasses >= 0 && options.coarsestPasses <= 8, "coarsestPasses",
           "must be in [0, 8], got " + std::to_string(options.coarsestPasses));
-  require(options.gridCellSize >= 4 && options.gridCellSize <= 64, "gridCellSize",
-          "M must be in [4, 64], got " + std::to_string(options.gridCellSize));
+  require(
+      options.gridCellSize >= 4 && options.gridCellSize <= 32 && options.gridCellSize % 2 == 0, "gridCellSize",
+      "M must be even (the dual cells are shifted by M/2) and in [4, 32], got " + std::to_string(options.gridCellSize));
   require(options.trilinearLevels >= 0, "trilinearLevels",
           "must be >= 0, got " + std::to_string(options.trilinearLevels));
   require(options.subpassGrid == 1 || options.subpassGrid == 2, "subpassGrid",
@@ -159,7 +165,7 @@ void LazySolid::synthesize(std::span<const Vec3i> voxels, Progress& progress) {
     require(v.cwiseAbs().maxCoeff() < kMaxVoxelCoordinate, "voxels", "coordinates must stay below 2^19 in magnitude");
     blocks.push_back(blockOfVoxel(v));
   }
-  synthesizeBlocks(std::move(blocks), progress);
+  synthesizeBlocks(std::move(blocks), levels() - 1, progress);
 }
 
 void LazySolid::synthesizeBox(const Vec3i& min, const Vec3i& size, Progress& progress) {
@@ -173,7 +179,55 @@ void LazySolid::synthesizeBox(const Vec3i& min, const Vec3i& size, Progress& pro
   for (int z = b0.z(); z <= b1.z(); ++z)
     for (int y = b0.y(); y <= b1.y(); ++y)
       for (int x = b0.x(); x <= b1.x(); ++x) blocks.push_back(blockKey(x, y, z));
-  synthesizeBlocks(std::move(blocks), progress);
+  synthesizeBlocks(std::move(blocks), levels() - 1, progress);
+}
+
+LazySolid::PlanMargin LazySolid::planMargin(int level) const {
+  // A level's plan for a set of blocks is the union of its plans for each block, and it repeats
+  // with the grid cells: plan one block at every alignment to the cells and take the widest reach.
+  const bool gridded = options_.dualGrid && level > 0 && options_.passes > 0;
+  const int alignments = gridded ? std::lcm(options_.gridCellSize, kB) / kB : 1;
+  PlanMargin margin;
+  for (int i = 0; i < alignments; ++i) {
+    const std::vector<BlockKey> deliver = {blockKey(i, i, i)};
+    const LazyDependencyPlan plan = planForLevel(level, deliver);
+    for (BlockKey key : plan.layers.front())
+      for (int a = 0; a < 3; ++a) {
+        margin.below = std::max(margin.below, i - blockIndex(key)[a]);
+        margin.above = std::max(margin.above, blockIndex(key)[a] - i);
+      }
+  }
+  return margin;
+}
+
+void LazySolid::prepareCoarsestLevel(const Vec3i& min, const Vec3i& size, Progress& progress) {
+  require((size.array() >= 1).all(), "voxels", "the box must have a positive size");
+  const Vec3i max = min + size - Vec3i::Ones();
+  require(min.cwiseAbs().maxCoeff() < kMaxVoxelCoordinate && max.cwiseAbs().maxCoeff() < kMaxVoxelCoordinate, "voxels",
+          "coordinates must stay below 2^19 in magnitude");
+  // The finest blocks of the box, then level by level the blocks any of them can need.
+  Vec3i lo(floorDiv(min.x(), kB), floorDiv(min.y(), kB), floorDiv(min.z(), kB));
+  Vec3i hi(floorDiv(max.x(), kB), floorDiv(max.y(), kB), floorDiv(max.z(), kB));
+  for (int l = levels() - 1; l >= 1; --l) {
+    const PlanMargin margin = planMargin(l);
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = floorDiv(lo[a] - margin.below, 2);
+      hi[a] = floorDiv(hi[a] + margin.above, 2);
+    }
+  }
+  std::vector<BlockKey> blocks;
+  for (int z = lo.z(); z <= hi.z(); ++z)
+    for (int y = lo.y(); y <= hi.y(); ++y)
+      for (int x = lo.x(); x <= hi.x(); ++x) blocks.push_back(blockKey(x, y, z));
+  synthesizeBlocks(std::move(blocks), 0, progress);
+}
+
+LazyDependencyPlan LazySolid::planForLevel(int level, const std::vector<BlockKey>& deliver) const {
+  const bool gridded = options_.dualGrid && level > 0 && options_.passes > 0;
+  if (gridded) return planGridLevel(deliver, options_.gridCellSize, context(level).readRadius(), options_.passes >= 2);
+  std::vector<int> classes;
+  for (const CorrectionStep& step : levelSchedule(options_, level, false).steps) classes.push_back(step.voxelClass);
+  return planLevel(deliver, classes, context(level).readRadius());
 }
 
 LevelContext LazySolid::context(int level) const {
@@ -192,27 +246,17 @@ LevelContext LazySolid::context(int level) const {
   return ctx;
 }
 
-void LazySolid::synthesizeBlocks(std::vector<BlockKey> blocks, Progress& progress) {
+void LazySolid::synthesizeBlocks(std::vector<BlockKey> blocks, int deliverLevel, Progress& progress) {
   const int levels = options_.levels;
-  const std::vector<int> classes = subpassClasses(options_.subpassGrid);
-  const auto stepClassesOf = [&](int level) {
-    std::vector<int> steps;
-    for (int pass = 0; pass < (level == 0 ? options_.coarsestPasses : options_.passes); ++pass)
-      steps.insert(steps.end(), classes.begin(), classes.end());
-    return steps;
-  };
   std::sort(blocks.begin(), blocks.end());
   blocks.erase(std::unique(blocks.begin(), blocks.end()), blocks.end());
 
-  // Plan, finest to coarsest: what each level delivers and what it must start from.
+  // Plan, from the delivering level down: what each level delivers and what it must start from.
   std::vector<LazyDependencyPlan> plans(static_cast<std::size_t>(levels));
   std::vector<BlockKey> deliver = std::move(blocks);
-  removeCached(deliver, impl_->caches[std::size_t(levels - 1)]);
-  const auto gridded = [&](int level) { return options_.dualGrid && level > 0 && options_.passes > 0; };
-  for (int l = levels - 1; l >= 0 && !deliver.empty(); --l) {
-    plans[std::size_t(l)] = gridded(l) ? planGridLevel(deliver, options_.gridCellSize, context(l).readRadius(),
-                                                       options_.passes >= 2)
-                                       : planLevel(deliver, stepClassesOf(l), context(l).readRadius());
+  removeCached(deliver, impl_->caches[std::size_t(deliverLevel)]);
+  for (int l = deliverLevel; l >= 0 && !deliver.empty(); --l) {
+    plans[std::size_t(l)] = planForLevel(l, deliver);
     if (l == 0) break;
     deliver = parentBlocks(plans[std::size_t(l)].layers.front());
     removeCached(deliver, impl_->caches[std::size_t(l - 1)]);
@@ -227,7 +271,6 @@ void LazySolid::synthesizeBlocks(std::vector<BlockKey> blocks, Progress& progres
     }
     const auto started = std::chrono::steady_clock::now();
     const LevelContext ctx = context(l);
-    const std::vector<int> stepClasses = stepClassesOf(l);
     WorkSet current(plan.layers.front());
     const BlockCache* parents = l > 0 ? &impl_->caches[std::size_t(l - 1)] : nullptr;
     parallelForChunks(0, std::int64_t(current.keys.size()), kInitChunk, [&](std::int64_t begin, std::int64_t end) {
@@ -242,31 +285,42 @@ void LazySolid::synthesizeBlocks(std::vector<BlockKey> blocks, Progress& progres
     });
     LazyLevelStats& stats = stats_[std::size_t(l)];
     stats.voxelsSynthesized += std::int64_t(current.keys.size()) * kBlockVoxels;
-    if (plan.gridScheme) {
-      // Every block stays readable; the phases' cells decide what is read at which version.
-      std::fill(current.lastLayer.begin(), current.lastLayer.end(), std::int32_t(stepClasses.size()));
-      const int primaryPasses = (options_.passes + 1) / 2, dualPasses = options_.passes / 2;
-      int step = 1;
-      for (int phaseIndex = 0; phaseIndex < 2; ++phaseIndex) {
-        if ((phaseIndex == 0 ? primaryPasses : dualPasses) == 0) continue;
-        const GridPhase phase =
-            beginGridPhase(current, phaseIndex == 0 ? plan.primaryCells : plan.dualCells, plan.cellSize,
-                           phaseIndex == 0 ? 0 : plan.cellSize / 2);
-        for (int pass = 0; pass < (phaseIndex == 0 ? primaryPasses : dualPasses); ++pass)
-          for (int voxelClass : subpassClasses(options_.subpassGrid))
-            stats += correctStep(ctx, current, step++, options_.subpassGrid, voxelClass, &phase);
-      }
-      current.phaseStart.clear();
-    } else {
+    const LevelSchedule schedule = levelSchedule(options_, l, plan.gridScheme);
+    const int radius = ctx.readRadius();
+    // Per step, the versions its windows read from snapshots (its read tables are rebuilt when it runs).
+    std::vector<std::vector<int>> snapshotVersions;
+    for (std::size_t k = 0; k < schedule.steps.size(); ++k)
+      snapshotVersions.push_back(stepReads(schedule, k, radius).snapshotVersions);
+    if (plan.gridScheme)  // every block stays readable; the windows decide which version is read
+      std::fill(current.lastLayer.begin(), current.lastLayer.end(), std::int32_t(schedule.steps.size()));
+    else
       for (std::size_t i = 1; i < plan.layers.size(); ++i)
         for (BlockKey key : plan.layers[i]) current.lastLayer[std::size_t(current.indexOf(key))] = std::int32_t(i);
-      for (std::size_t i = 0; i < stepClasses.size(); ++i)
-        stats += correctStep(ctx, current, int(i) + 1, options_.subpassGrid, stepClasses[i]);
+    GridPhase phase;
+    for (std::size_t k = 0; k < schedule.steps.size(); ++k) {
+      const CorrectionStep& step = schedule.steps[k];
+      if (k == 0 || schedule.steps[k - 1].pass != step.pass) {
+        // A pass begins: keep its starting version if a window reads it later below the latest,
+        // and free the snapshots no step reads any more.
+        std::vector<int> stillRead;
+        for (std::size_t j = k; j < snapshotVersions.size(); ++j)
+          stillRead.insert(stillRead.end(), snapshotVersions[j].begin(), snapshotVersions[j].end());
+        current.dropSnapshotsExcept(stillRead);
+        if (std::find(stillRead.begin(), stillRead.end(), step.pass - 1) != stillRead.end())
+          current.takeSnapshot(step.pass - 1);
+        stats.peakWorkingBytes = std::max(stats.peakWorkingBytes, workingBytes(current));
+      }
+      if (step.gridPhase >= 0 && (k == 0 || schedule.steps[k - 1].gridPhase != step.gridPhase))
+        phase = gridPhase(current, step.gridPhase == 0 ? plan.primaryCells : plan.dualCells, step.cellSize, step.shift);
+      stats +=
+          correctStep(ctx, current, int(k) + 1, stepReads(schedule, k, radius), step.gridPhase >= 0 ? &phase : nullptr);
     }
+    current.snapshots.clear();
     BlockCache& cache = impl_->caches[std::size_t(l)];
     for (BlockKey key : plan.layers.back())
       cache.emplace(key, current.blocks[std::size_t(current.indexOf(key))].triples);
     stats.blocksCached = std::int64_t(cache.size());
+    stats.cachedBytes = std::int64_t(cache.size()) * cachedBlockBytes;
     stats.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     progress.advance(1);
   }

@@ -1,6 +1,7 @@
 #include "texsynth/solid/lazy_solid_texture.h"
 
 #include <cmath>
+#include <limits>
 
 #include "texsynth/core/error.h"
 
@@ -27,6 +28,21 @@ void LazySolidTexture::prepare(std::span<const Vec3f> points, Progress& progress
     voxels.push_back(voxelOf(p));
   }
   solid_->synthesize(voxels, progress);
+}
+
+void LazySolidTexture::prepareDomain(const Box3f& box, Progress& progress) {
+  if (!box.valid()) throw ParameterError("box", "is empty");
+  Vec3i lo = Vec3i::Constant(std::numeric_limits<int>::max()), hi = Vec3i::Constant(std::numeric_limits<int>::min());
+  for (int corner = 0; corner < 8; ++corner) {
+    const Vec3f p((corner & 1 ? box.max : box.min).x(), (corner & 2 ? box.max : box.min).y(),
+                  (corner & 4 ? box.max : box.min).z());
+    const Vec3f e = placement_.toExemplar(p);
+    if (!e.allFinite() || e.cwiseAbs().maxCoeff() >= float(1 << 19))
+      throw ParameterError("box", "must be finite and within 2^19 exemplar pixels of the placement origin");
+    lo = lo.cwiseMin(voxelOf(p));
+    hi = hi.cwiseMax(voxelOf(p));
+  }
+  solid_->prepareCoarsestLevel(lo, hi - lo + Vec3i::Ones(), progress);
 }
 
 void LazySolidTexture::evaluateSerial(std::span<const Vec3f> points, std::span<const Vec3f>,

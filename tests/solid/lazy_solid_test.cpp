@@ -130,9 +130,44 @@ TEST(LazySolid, DualGridRequestIndependentWithCurvedField) {
   LazySolidOptions options = onePassOfSubpasses();
   options.passes = 3;  // two primary passes, one dual
   options.dualGrid = true;
-  options.gridCellSize = 5;
+  options.gridCellSize = 6;
   options.neighborhoodSizes = {3, 5};
   expectRequestIndependent(options, curvedOrientation(), {-4, -11, -2}, {14, 12, 11});
+}
+
+// The requests the paper serves, in one process and separately: the coarsest level over a
+// box, a "surface" (a sphere's shell) and a new cut through it, against the full volume and
+// against the cut alone. Every voxel gets the same triple at every level.
+TEST(LazySolid, SurfaceCutAndFullVolumeRequestsAgree) {
+  LazySolidOptions options = fastOptions();
+  options.dualGrid = true;
+  options.gridCellSize = 6;
+  options.subpassGrid = 2;
+  options.coarsestPasses = 1;
+  const Vec3i boxMin(-2, 0, -1), boxSize(16, 16, 16);
+  std::vector<Vec3i> shell, cut;
+  for (int z = 0; z < 16; ++z)
+    for (int y = 0; y < 16; ++y)
+      for (int x = 0; x < 16; ++x) {
+        const Vec3i v = boxMin + Vec3i(x, y, z);
+        if (std::abs((v - Vec3i(6, 8, 7)).cast<float>().norm() - 6.0f) < 0.5f) shell.push_back(v);
+        if (v.z() == 5) cut.push_back(v);
+      }
+  LazySolid model(pattern(), options), volume(pattern(), options), cutAlone(pattern(), options);
+  model.prepareCoarsestLevel(boxMin, boxSize);
+  const std::int64_t coarsestVoxels = model.stats()[0].voxelsSynthesized;
+  model.synthesize(shell);
+  model.synthesize(cut);
+  EXPECT_EQ(model.stats()[0].voxelsSynthesized, coarsestVoxels) << "surface and cut reuse the cached coarsest level";
+  volume.synthesizeBox(boxMin, boxSize);
+  cutAlone.synthesize(cut);
+  for (const std::vector<Vec3i>* request : {&shell, &cut})
+    for (const Vec3i& v : *request)
+      for (int level = 0; level < options.levels; ++level) {
+        const Vec3i at = v.unaryExpr([&](int c) { return c >> (options.levels - 1 - level); });
+        ASSERT_EQ(model.triple(at, level), volume.triple(at, level)) << v.transpose() << " level " << level;
+      }
+  for (const Vec3i& v : cut) ASSERT_EQ(model.triple(v, options.levels - 1), cutAlone.triple(v, options.levels - 1));
 }
 
 // Per-voxel reach of the grid plan: a delivered block's dual cells, their reach in primary

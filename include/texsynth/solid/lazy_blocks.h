@@ -10,6 +10,7 @@
 #include "texsynth/core/math.h"
 #include "texsynth/exemplar/analysis.h"
 #include "texsynth/exemplar/candidate_triples.h"
+#include "texsynth/solid/history_window.h"
 #include "texsynth/solid/lazy_solid.h"
 
 namespace texsynth::lazy {
@@ -59,13 +60,17 @@ struct WorkSet {
   std::vector<BlockKey> keys;
   std::vector<WorkBlock> blocks;
   std::vector<std::int32_t> lastLayer;
-  // Grid scheme: each block's triples and colours when the current phase began (what a
-  // correction reads of voxels outside its own cell); empty otherwise.
-  struct PhaseStart {
+  // Earlier versions that history windows still read below the latest (the grid scheme: the
+  // state its phase began from): each block's triples and colours after pass `version`.
+  struct Snapshot {
     TripleBlock triples;
     std::array<float, kBlockVoxels * kMaxChannels> colors;
   };
-  std::vector<PhaseStart> phaseStart;
+  struct Version {
+    int version = 0;
+    std::vector<Snapshot> blocks;
+  };
+  std::vector<Version> snapshots;
   std::unordered_map<BlockKey, std::int32_t> index;
 
   explicit WorkSet(std::vector<BlockKey> sortedKeys);
@@ -73,6 +78,10 @@ struct WorkSet {
     auto it = index.find(key);
     return it == index.end() ? -1 : it->second;
   }
+  // Keeps the current state as `version` (taken when the pass after it begins).
+  void takeSnapshot(int version);
+  // Frees the snapshots of versions no step reads any more.
+  void dropSnapshotsExcept(const std::vector<int>& versions);
 };
 
 // One level's dependency plan under the standard pass/subpass scheme: layers[0] holds the
@@ -134,26 +143,67 @@ void upsampleBlock(const LevelContext& ctx, const BlockCache& parents, WorkBlock
 // Frames and colours of a block whose triples are set.
 void finishBlock(const LevelContext& ctx, WorkBlock& block);
 
-// One phase (primary or dual) of grid correction: cells [cM - shift, cM - shift + M) per axis,
-// and per block of the work set the voxels (bit per slot) this phase corrects.
+// A level's correction schedule: its steps in order, each a pass (or one subpass of it) with
+// the history windows its voxels read through (§5.2): the standard scheme (pass or subpass
+// windows) or, above the coarsest level with dual grid, ceil(P/2) primary then floor(P/2) dual
+// grid passes, each subpass reading H_g ∩ H_s.
+struct CorrectionStep {
+  int pass = 1;         // 1-based: the version the step produces
+  int subpass = 0;      // index into LevelSchedule::classOrder
+  int voxelClass = -1;  // voxels corrected: class x mod s | y mod s << 1 | z mod s << 2; -1 all
+  int gridPhase = -1;   // -1: none; 0 primary cells, 1 dual cells (shifted by M / 2)
+  int cellSize = 0, shift = 0, startVersion = 0;
+};
+struct LevelSchedule {
+  int s = 1;
+  std::vector<int> classOrder;  // s^3 classes ({-1} for s = 1)
+  std::vector<CorrectionStep> steps;
+  // H(p) of step k (0-based) for voxel p: the (sub)pass window, intersected with the grid window.
+  HistoryWindow window(std::size_t k, const Vec3i& voxel, int radius) const;
+  // The versions p's neighbours hold when step k runs (the subpass or pass window): a version
+  // read below it comes from a snapshot.
+  HistoryWindow latest(std::size_t k, const Vec3i& voxel, int radius) const;
+  // Window types repeat with this period per axis (s, or lcm(s, M) under grid correction).
+  int period(std::size_t k) const;
+};
+// The schedule of `level` for these options; `grid` selects dual-grid correction.
+LevelSchedule levelSchedule(const LazySolidOptions& options, int level, bool grid);
+// How step k reads: per voxel type (position mod the period) a table over the window's D^3
+// offsets of the version read from a snapshot, or -1 where the neighbour's current state is
+// read. Built from the step's windows; types of other classes stay empty.
+struct StepReads {
+  int radius = 0, period = 1, s = 1, voxelClass = -1;
+  std::vector<std::vector<std::int8_t>> sources;  // per type
+  std::vector<int> snapshotVersions;              // sorted versions some table reads
+  const std::int8_t* sourcesFor(const Vec3i& voxel) const;
+};
+StepReads stepReads(const LevelSchedule& schedule, std::size_t k, int radius);
+// The exact voxels a level must hold after each step for `deliver` to come out right, from the
+// schedule's history windows: needed[K] = deliver (K steps); a voxel needed after step k that
+// step k corrects (its class) needs every neighbour in its window at the version the window
+// gives (the state after that pass's last step; the latest: after step k - 1), a voxel step k
+// leaves alone needs itself after step k - 1. needed[0]: what upsampling must make. Sorted.
+// Voxel by voxel (D^3 per corrected voxel), so for checking the block planners on small requests.
+std::vector<std::vector<Vec3i>> windowDependencies(const LevelSchedule& schedule, const std::vector<Vec3i>& deliver,
+                                                   int radius);
+
+// One phase (primary or dual) of grid correction: per block of the work set the voxels (bit per
+// slot) lying in the phase's planned cells (sorted keys of cell indices), the only ones it corrects.
 struct GridPhase {
-  int cellSize = 0, shift = 0;
   std::vector<std::uint64_t> correct;
 };
-// The phase over `cells` (sorted keys of cell indices), with `set.phaseStart` taken now.
-GridPhase beginGridPhase(WorkSet& set, const std::vector<BlockKey>& cells, int cellSize, int shift);
+GridPhase gridPhase(const WorkSet& set, const std::vector<BlockKey>& cells, int cellSize, int shift);
 
 // Correction step `step` (1-based) in place: every block with lastLayer >= step corrects its
-// voxels of class `voxelClass` (x mod s, y mod s, z mod s as bits 0..2; -1 = all voxels) from
-// the state before the step (all results are computed before any is written). Voxels that would
-// read a stale or missing block are left alone (they lie outside the exact planned region).
+// voxels of the step's class (all voxels for -1) from the state before the step (all results are
+// computed before any is written), reading each neighbour at the version its history window
+// gives (`reads`). Voxels that would read a stale or missing block are left alone (they lie
+// outside the exact planned region). With a grid phase only the phase's voxels are corrected.
 // Returns the number of corrected voxels and of neighbourhood comparisons.
-// With a grid phase, the phase's voxels are corrected instead, reading the phase's start state
-// of voxels outside their own cell.
 struct StepCounts {
   std::int64_t corrections = 0, comparisons = 0;
 };
-StepCounts correctStep(const LevelContext& ctx, WorkSet& set, int step, int s, int voxelClass,
+StepCounts correctStep(const LevelContext& ctx, WorkSet& set, int step, const StepReads& reads,
                        const GridPhase* phase = nullptr);
 
 }  // namespace texsynth::lazy

@@ -30,7 +30,8 @@ namespace texsynth {
 
 namespace lazy {
 struct LevelContext;
-}
+struct LazyDependencyPlan;
+}  // namespace lazy
 
 struct LazySolidOptions {
   // Pyramid levels L (paper: 4). Level l (0 = coarsest) uses the exemplar stack at spacing
@@ -48,7 +49,7 @@ struct LazySolidOptions {
   // passes * s^3 * N/2 (paper's setting). false: the standard scheme (every voxel reads its
   // neighbours' latest state).
   bool dualGrid = true;
-  // M, the cell side in voxels (paper: 10-15). In [4, 64].
+  // M, the cell side in voxels (paper: 10-15). Even (the dual cells are shifted by M/2), in [4, 32].
   int gridCellSize = 12;
   // Correction passes at the coarsest level (paper: "3-5 correction passes ... without
   // barriers" there, as its grid is small). In [0, 8].
@@ -106,6 +107,11 @@ struct LazyLevelStats {
   std::int64_t comparisons = 0;        // neighbourhood comparisons (distinct candidates measured)
   std::int64_t blocksCached = 0;       // finished 4^3 blocks now in the cache
   double seconds = 0;                  // wall time spent on the level
+  // Memory: the most the level's working set held at once in any request (its blocks with
+  // triples, colours and frames, the history snapshots its corrections read, a step's results),
+  // and what its cache of finished triples holds now (kept for later requests).
+  std::int64_t peakWorkingBytes = 0;
+  std::int64_t cachedBytes = 0;
 };
 
 class LazySolid {
@@ -135,6 +141,12 @@ class LazySolid {
   void synthesize(std::span<const Vec3i> voxels, Progress& progress = noProgress());
   // Every voxel of the box [min, min + size).
   void synthesizeBox(const Vec3i& min, const Vec3i& size, Progress& progress = noProgress());
+  // Synthesizes and caches the coarsest level wherever a request inside the finest-level box
+  // [min, min + size) can need it (the paper synthesizes the coarsest level of the whole volume
+  // around the object). Later surfaces and cuts inside the box then start from cached coarse
+  // triples instead of regrowing the coarsest level's unrestricted reach each time. Results do
+  // not change: a voxel's triple never depends on what was requested.
+  void prepareCoarsestLevel(const Vec3i& min, const Vec3i& size, Progress& progress = noProgress());
 
   // True if the finest-level voxel has been synthesized.
   bool ready(const Vec3i& voxel) const;
@@ -149,7 +161,15 @@ class LazySolid {
 
  private:
   void initialize(const Image& xy, const Image& yz, const Image& zx, Progress& progress);
-  void synthesizeBlocks(std::vector<std::uint64_t> blocks, Progress& progress);
+  // Synthesizes `blocks` of level `deliverLevel` (and what they need on coarser levels).
+  void synthesizeBlocks(std::vector<std::uint64_t> blocks, int deliverLevel, Progress& progress);
+  // The dependency plan of one level for blocks it must deliver (lazy_blocks.h).
+  lazy::LazyDependencyPlan planForLevel(int level, const std::vector<std::uint64_t>& deliver) const;
+  // How many blocks a level's plan reaches beyond a delivered block, at most, per side.
+  struct PlanMargin {
+    int below = 0, above = 0;
+  };
+  PlanMargin planMargin(int level) const;
   lazy::LevelContext context(int level) const;
 
   LazySolidOptions options_;
