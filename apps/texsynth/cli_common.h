@@ -60,7 +60,6 @@ void printJson(const nlohmann::json& document);
 // else ~/.cache/texsynth, else a texsynth directory under the system temp directory.
 std::string defaultCacheDirectory();
 
-// Short human-readable message on stderr, unless --quiet.
 // Per-request peak memory: the process's peak resident memory (MiB, Linux VmHWM) since the last
 // call, after which the peak starts over from the current use (so one request's peak is not
 // hidden by an earlier one's); -1 where unknown. Call once before the first request.
@@ -68,6 +67,7 @@ std::string defaultCacheDirectory();
 double takePeakResidentMiB();
 double processPeakResidentMiB();
 
+// Short human-readable message on stderr, unless --quiet.
 void say(const GlobalOptions& globals, const std::string& message);
 
 // The subcommands; each lives in its own cmd_<name>.cpp.

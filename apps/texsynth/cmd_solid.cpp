@@ -58,7 +58,6 @@ auto withPrepared(SolidTexture& solid, Consume consume) {
   return consume(static_cast<const SolidTexture&>(solid));
 }
 
-
 // Three comma-separated values, or one for all three axes.
 Vec3f parseVec3(const std::string& text, const std::string& flag) {
   std::size_t commas = std::count(text.begin(), text.end(), ',');
@@ -182,7 +181,7 @@ void runSolid(const SolidArgs& args, const GlobalOptions& globals) {
   report["setup_seconds"] = lap();
   report["setup_peak_rss_mib"] = takePeakResidentMiB();
   if (!lazy.parts.empty())  // the work so far: the coarsest level over the box (separate from what follows)
-    report["coarsest_level"] = {{"seconds", report["coarsest_level_seconds"]}, {"lazy", lazyStats(lazy)}};
+    report["coarsest_level"]["lazy"] = lazyStats(lazy);
   if (args.surface > 0) {  // the whole surface at a resolution: synthesized and evaluated, for timing
     std::vector<Vec3f> points = surfaceVoxelCenters(mesh, box, args.surface);
     solid->prepare(points);

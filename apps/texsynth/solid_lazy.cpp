@@ -68,12 +68,12 @@ LazyBuild makeLazySolid(const SolidArgs& args, const Mesh& mesh, const Box3f& bo
   auto outerTexture = std::make_shared<LazySolidTexture>(outer, placement);
   // The coarsest level over the whole box once (as the paper does for its volume): every
   // surface, slice or cut inside then reuses it.
+  report["coarsest_level"]["seconds"] = 0.0;  // shell and core together
   const auto coarsest = [&](LazySolidTexture& texture) {
     const auto started = std::chrono::steady_clock::now();
     texture.prepareDomain(box);
-    report["coarsest_level_seconds"] =
-        report.value("coarsest_level_seconds", 0.0) +
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    json& seconds = report["coarsest_level"]["seconds"];
+    seconds = seconds.get<double>() + std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   };
   coarsest(*outerTexture);
   if (args.inner.empty()) {

@@ -80,18 +80,6 @@ LazyDependencyPlan planLevel(const std::vector<BlockKey>& deliver, const std::ve
 
 namespace {
 
-// Inclusive index ranges along x, y, z.
-struct IndexBox {
-  Vec3i lo, hi;
-};
-
-// Appends the keys of every index in `box`.
-void appendBox(std::vector<BlockKey>& keys, const IndexBox& box) {
-  for (int z = box.lo.z(); z <= box.hi.z(); ++z)
-    for (int y = box.lo.y(); y <= box.hi.y(); ++y)
-      for (int x = box.lo.x(); x <= box.hi.x(); ++x) keys.push_back(blockKey(x, y, z));
-}
-
 // The voxels [lo, hi] of an index box of `size`-voxel units whose origin is shifted by -shift.
 IndexBox voxelsOf(const Vec3i& index, int size, int shift) {
   const Vec3i lo = index * size - Vec3i::Constant(shift);
@@ -109,6 +97,12 @@ IndexBox unitsTouching(const IndexBox& voxels, int grow, int size, int shift) {
 }
 
 }  // namespace
+
+void appendBox(std::vector<BlockKey>& keys, const IndexBox& box) {
+  for (int z = box.lo.z(); z <= box.hi.z(); ++z)
+    for (int y = box.lo.y(); y <= box.hi.y(); ++y)
+      for (int x = box.lo.x(); x <= box.hi.x(); ++x) keys.push_back(blockKey(x, y, z));
+}
 
 LazyDependencyPlan planGridLevel(const std::vector<BlockKey>& deliver, int cellSize, int readRadius, bool dualPhase) {
   TS_CHECK(cellSize >= 2 && readRadius >= 1);

@@ -54,6 +54,17 @@ std::int64_t workingBytes(const WorkSet& set) {
          std::int64_t(set.snapshots.size() * set.blocks.size()) * std::int64_t(sizeof(WorkSet::Snapshot));
 }
 
+// The finest-level blocks holding the voxel box [min, min + size); ParameterError("voxels", ...)
+// for an empty box or one beyond 2^19.
+IndexBox blocksOfBox(const Vec3i& min, const Vec3i& size) {
+  require((size.array() >= 1).all(), "voxels", "the box must have a positive size");
+  const Vec3i max = min + size - Vec3i::Ones();
+  require(min.cwiseAbs().maxCoeff() < kMaxVoxelCoordinate && max.cwiseAbs().maxCoeff() < kMaxVoxelCoordinate, "voxels",
+          "coordinates must stay below 2^19 in magnitude");
+  return {Vec3i(floorDiv(min.x(), kB), floorDiv(min.y(), kB), floorDiv(min.z(), kB)),
+          Vec3i(floorDiv(max.x(), kB), floorDiv(max.y(), kB), floorDiv(max.z(), kB))};
+}
+
 void removeCached(std::vector<BlockKey>& keys, const BlockCache& cache) {
   keys.erase(std::remove_if(keys.begin(), keys.end(), [&](BlockKey k) { return cache.count(k) != 0; }), keys.end());
 }
@@ -169,24 +180,15 @@ void LazySolid::synthesize(std::span<const Vec3i> voxels, Progress& progress) {
 }
 
 void LazySolid::synthesizeBox(const Vec3i& min, const Vec3i& size, Progress& progress) {
-  require((size.array() >= 1).all(), "voxels", "the box must have a positive size");
-  const Vec3i max = min + size - Vec3i::Ones();
-  require(min.cwiseAbs().maxCoeff() < kMaxVoxelCoordinate && max.cwiseAbs().maxCoeff() < kMaxVoxelCoordinate, "voxels",
-          "coordinates must stay below 2^19 in magnitude");
-  const Vec3i b0 = Vec3i(floorDiv(min.x(), kB), floorDiv(min.y(), kB), floorDiv(min.z(), kB));
-  const Vec3i b1 = Vec3i(floorDiv(max.x(), kB), floorDiv(max.y(), kB), floorDiv(max.z(), kB));
   std::vector<BlockKey> blocks;
-  for (int z = b0.z(); z <= b1.z(); ++z)
-    for (int y = b0.y(); y <= b1.y(); ++y)
-      for (int x = b0.x(); x <= b1.x(); ++x) blocks.push_back(blockKey(x, y, z));
+  appendBox(blocks, blocksOfBox(min, size));
   synthesizeBlocks(std::move(blocks), levels() - 1, progress);
 }
 
 LazySolid::PlanMargin LazySolid::planMargin(int level) const {
   // A level's plan for a set of blocks is the union of its plans for each block, and it repeats
   // with the grid cells: plan one block at every alignment to the cells and take the widest reach.
-  const bool gridded = options_.dualGrid && level > 0 && options_.passes > 0;
-  const int alignments = gridded ? std::lcm(options_.gridCellSize, kB) / kB : 1;
+  const int alignments = gridded(level) ? std::lcm(options_.gridCellSize, kB) / kB : 1;
   PlanMargin margin;
   for (int i = 0; i < alignments; ++i) {
     const std::vector<BlockKey> deliver = {blockKey(i, i, i)};
@@ -201,30 +203,24 @@ LazySolid::PlanMargin LazySolid::planMargin(int level) const {
 }
 
 void LazySolid::prepareCoarsestLevel(const Vec3i& min, const Vec3i& size, Progress& progress) {
-  require((size.array() >= 1).all(), "voxels", "the box must have a positive size");
-  const Vec3i max = min + size - Vec3i::Ones();
-  require(min.cwiseAbs().maxCoeff() < kMaxVoxelCoordinate && max.cwiseAbs().maxCoeff() < kMaxVoxelCoordinate, "voxels",
-          "coordinates must stay below 2^19 in magnitude");
   // The finest blocks of the box, then level by level the blocks any of them can need.
-  Vec3i lo(floorDiv(min.x(), kB), floorDiv(min.y(), kB), floorDiv(min.z(), kB));
-  Vec3i hi(floorDiv(max.x(), kB), floorDiv(max.y(), kB), floorDiv(max.z(), kB));
+  IndexBox box = blocksOfBox(min, size);
   for (int l = levels() - 1; l >= 1; --l) {
     const PlanMargin margin = planMargin(l);
     for (int a = 0; a < 3; ++a) {
-      lo[a] = floorDiv(lo[a] - margin.below, 2);
-      hi[a] = floorDiv(hi[a] + margin.above, 2);
+      box.lo[a] = floorDiv(box.lo[a] - margin.below, 2);
+      box.hi[a] = floorDiv(box.hi[a] + margin.above, 2);
     }
   }
   std::vector<BlockKey> blocks;
-  for (int z = lo.z(); z <= hi.z(); ++z)
-    for (int y = lo.y(); y <= hi.y(); ++y)
-      for (int x = lo.x(); x <= hi.x(); ++x) blocks.push_back(blockKey(x, y, z));
+  appendBox(blocks, box);
   synthesizeBlocks(std::move(blocks), 0, progress);
 }
 
+bool LazySolid::gridded(int level) const { return options_.dualGrid && level > 0 && options_.passes > 0; }
+
 LazyDependencyPlan LazySolid::planForLevel(int level, const std::vector<BlockKey>& deliver) const {
-  const bool gridded = options_.dualGrid && level > 0 && options_.passes > 0;
-  if (gridded) return planGridLevel(deliver, options_.gridCellSize, context(level).readRadius(), options_.passes >= 2);
+  if (gridded(level)) return planGridLevel(deliver, options_.gridCellSize, context(level).readRadius(), options_.passes >= 2);
   std::vector<int> classes;
   for (const CorrectionStep& step : levelSchedule(options_, level, false).steps) classes.push_back(step.voxelClass);
   return planLevel(deliver, classes, context(level).readRadius());

@@ -18,13 +18,21 @@ Vec3i LazySolidTexture::voxelOf(const Vec3f& point) const {
   return {int(std::floor(e.x())), int(std::floor(e.y())), int(std::floor(e.z()))};
 }
 
+namespace {
+// The exemplar position of a point, checked against the coordinate range LazySolid accepts.
+Vec3f checkedExemplarPosition(const SolidPlacement& placement, const Vec3f& point, const char* parameter) {
+  const Vec3f e = placement.toExemplar(point);
+  if (!e.allFinite() || e.cwiseAbs().maxCoeff() >= float(1 << 19))
+    throw ParameterError(parameter, "must be finite and within 2^19 exemplar pixels of the placement origin");
+  return e;
+}
+}  // namespace
+
 void LazySolidTexture::prepare(std::span<const Vec3f> points, Progress& progress) {
   std::vector<Vec3i> voxels;
   voxels.reserve(points.size());
   for (const Vec3f& p : points) {
-    const Vec3f e = placement_.toExemplar(p);
-    if (!e.allFinite() || e.cwiseAbs().maxCoeff() >= float(1 << 19))
-      throw ParameterError("points", "must be finite and within 2^19 exemplar pixels of the placement origin");
+    checkedExemplarPosition(placement_, p, "points");
     voxels.push_back(voxelOf(p));
   }
   solid_->synthesize(voxels, progress);
@@ -36,9 +44,7 @@ void LazySolidTexture::prepareDomain(const Box3f& box, Progress& progress) {
   for (int corner = 0; corner < 8; ++corner) {
     const Vec3f p((corner & 1 ? box.max : box.min).x(), (corner & 2 ? box.max : box.min).y(),
                   (corner & 4 ? box.max : box.min).z());
-    const Vec3f e = placement_.toExemplar(p);
-    if (!e.allFinite() || e.cwiseAbs().maxCoeff() >= float(1 << 19))
-      throw ParameterError("box", "must be finite and within 2^19 exemplar pixels of the placement origin");
+    checkedExemplarPosition(placement_, p, "box");
     lo = lo.cwiseMin(voxelOf(p));
     hi = hi.cwiseMax(voxelOf(p));
   }

@@ -41,6 +41,13 @@ inline int voxelSlot(const Vec3i& v) {
          (v.x() - floorDiv(v.x(), kB) * kB);
 }
 
+// Inclusive index ranges along x, y, z (of blocks, cells or voxels).
+struct IndexBox {
+  Vec3i lo, hi;
+};
+// Appends the key (blockKey packing) of every index in `box`.
+void appendBox(std::vector<BlockKey>& keys, const IndexBox& box);
+
 using TripleBlock = std::array<CoordinateTriple, kBlockVoxels>;
 using BlockCache = std::unordered_map<BlockKey, TripleBlock>;
 

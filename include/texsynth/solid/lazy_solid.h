@@ -163,6 +163,8 @@ class LazySolid {
   void initialize(const Image& xy, const Image& yz, const Image& zx, Progress& progress);
   // Synthesizes `blocks` of level `deliverLevel` (and what they need on coarser levels).
   void synthesizeBlocks(std::vector<std::uint64_t> blocks, int deliverLevel, Progress& progress);
+  // True where the level runs dual-grid correction (every level but the coarsest, if enabled).
+  bool gridded(int level) const;
   // The dependency plan of one level for blocks it must deliver (lazy_blocks.h).
   lazy::LazyDependencyPlan planForLevel(int level, const std::vector<std::uint64_t>& deliver) const;
   // How many blocks a level's plan reaches beyond a delivered block, at most, per side.
