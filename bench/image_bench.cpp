@@ -21,10 +21,14 @@ void benchmarkWindows(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * kSide * kSide);
 }
 
-void BM_TileDeform(benchmark::State& state) { benchmarkWindows<TileDeformTexture, TileDeformOptions>(state); }
+void BM_TileDeform(benchmark::State& state) {
+  benchmarkWindows<TileDeformTexture, TileDeformOptions>(state);
+}
 BENCHMARK(BM_TileDeform)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-void BM_TileBlend(benchmark::State& state) { benchmarkWindows<TileBlendTexture, TileBlendOptions>(state); }
+void BM_TileBlend(benchmark::State& state) {
+  benchmarkWindows<TileBlendTexture, TileBlendOptions>(state);
+}
 BENCHMARK(BM_TileBlend)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace

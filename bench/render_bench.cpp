@@ -32,10 +32,12 @@ BENCHMARK(BM_RenderPerVertex)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->Us
 void BM_RenderColorFunction(benchmark::State& state) {
   ThreadLimit limit(int(state.range(0)));
   const Mesh& mesh = benchMesh();
-  SurfaceColorFunction checker = [](const std::vector<Vec3f>& points, const std::vector<Vec3f>&, std::vector<Vec3f>& colors) {
+  SurfaceColorFunction checker = [](const std::vector<Vec3f>& points, const std::vector<Vec3f>&,
+                                    std::vector<Vec3f>& colors) {
     colors.resize(points.size());
     for (std::size_t i = 0; i < points.size(); ++i)
-      colors[i] = ((points[i] * 8).array().floor().cast<int>().sum() & 1) ? Vec3f(0.9f, 0.5f, 0.2f) : Vec3f(0.2f, 0.4f, 0.8f);
+      colors[i] =
+          ((points[i] * 8).array().floor().cast<int>().sum() & 1) ? Vec3f(0.9f, 0.5f, 0.2f) : Vec3f(0.2f, 0.4f, 0.8f);
   };
   for (auto _ : state) benchmark::DoNotOptimize(renderMesh(mesh, checker).pixels.data());
 }

@@ -23,7 +23,8 @@ namespace {
 
 const Mesh& benchMesh() {
   static const Mesh mesh = [] {
-    Mesh m = cgalMesh("bunny00.off") ? readMesh(*cgalMesh("bunny00.off")) : makeUvSphereMesh(Vec3f::Zero(), 1, 200, 200);
+    Mesh m =
+        cgalMesh("bunny00.off") ? readMesh(*cgalMesh("bunny00.off")) : makeUvSphereMesh(Vec3f::Zero(), 1, 200, 200);
     if (m.normals.size() != m.positions.size()) m.computeNormals();
     return m;
   }();
@@ -155,8 +156,8 @@ void BM_LazyPlanVersusWindows(benchmark::State& state) {
   std::vector<int> classes;
   for (const lazy::CorrectionStep& step : schedule.steps) classes.push_back(step.voxelClass);
   const std::vector<lazy::BlockKey> blocks = {lazy::blockKey(0, 0, 0)};
-  const lazy::LazyDependencyPlan plan = grid ? lazy::planGridLevel(blocks, options.gridCellSize, radius, true)
-                                             : lazy::planLevel(blocks, classes, radius);
+  const lazy::LazyDependencyPlan plan =
+      grid ? lazy::planGridLevel(blocks, options.gridCellSize, radius, true) : lazy::planLevel(blocks, classes, radius);
   const double planned = double(plan.layers.front().size()) * lazy::kBlockVoxels;
   state.counters["exact_voxels"] = double(exact);
   state.counters["planned_voxels"] = planned;

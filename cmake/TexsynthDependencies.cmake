@@ -2,6 +2,7 @@
 find_package(Eigen3 3.4 REQUIRED NO_MODULE)
 find_package(TBB REQUIRED)
 find_package(ZLIB REQUIRED)
+find_package(JPEG REQUIRED)  # libjpeg-turbo
 find_package(OpenEXR REQUIRED CONFIG)
 find_package(nanoflann REQUIRED)
 find_package(faiss REQUIRED)

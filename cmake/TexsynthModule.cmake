@@ -3,6 +3,9 @@
 
 add_library(texsynth_warnings INTERFACE)
 target_compile_options(texsynth_warnings INTERFACE -Wall -Wextra)
+if(TEXSYNTH_WERROR)
+  target_compile_options(texsynth_warnings INTERFACE -Werror)
+endif()
 if(TEXSYNTH_NATIVE)
   target_compile_options(texsynth_warnings INTERFACE -march=native)
 endif()

@@ -1,18 +1,20 @@
 #!/usr/bin/env bash
 # Installs every Debian package texsynth needs to build, test and run its demo.
 # Idempotent: packages already present are skipped, apt is only called when something is missing.
+# Extra package names given as arguments are installed too (scripts/fuzz.sh adds clang).
 set -euo pipefail
 
 PACKAGES=(
   # toolchain
-  build-essential cmake ninja-build pkg-config git
+  build-essential cmake ninja-build pkg-config git clang-format
   # libraries
-  libeigen3-dev libtbb-dev libstb-dev libopenexr-dev libimath-dev zlib1g-dev
+  libeigen3-dev libtbb-dev libstb-dev libopenexr-dev libimath-dev zlib1g-dev libjpeg62-turbo-dev
   libnanoflann-dev libfaiss-dev libcgal-dev libopenvdb-dev libboost-iostreams-dev libblosc-dev libtinygltf-dev
   libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
   # real data: exemplars, meshes, malformed models; a peer synthesizer for comparisons
   gimp-data libcgal-demo assimp-testmodels gmic
 )
+PACKAGES+=("$@")
 
 missing=()
 for p in "${PACKAGES[@]}"; do

@@ -11,16 +11,19 @@
 #include <type_traits>
 #include <vector>
 
+#include "number_checks.h"
 #include "texsynth/core/error.h"
+#include "texsynth/image/window_support.h"
 
 namespace texsynth::cli {
 
 void addGlobalOptions(CLI::App& app, GlobalOptions& globals) {
   app.add_option("--seed", globals.seed, "Random seed; the same seed gives the same bits for any thread count")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(unsigned64());
   app.add_option("--threads", globals.threads, "Worker threads (0 = all cores)")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(integerIn(0, kMaxThreads));
   app.add_flag("--quiet,-q", globals.quiet, "No progress bar or messages on stderr");
   app.add_flag("--json", globals.json, "Print machine-readable results as JSON on stdout");
 }
@@ -95,14 +98,21 @@ Window parseWindow(const std::string& text, const std::string& flag) {
            parseNumber<int>(parts[2], flag, text), parseNumber<int>(parts[3], flag, text)};
   if (w.width <= 0 || w.height <= 0 || w.width > 65536 || w.height > 65536)
     throw ParameterError(flag, "'" + text + "': W and H must be between 1 and 65536");
+  try {  // the library's one rule for every random-access method, checked before any work
+    requireWindow(w.x, w.y, w.width, w.height);
+  } catch (const ParameterError& e) {
+    throw ParameterError(flag, "'" + text + "': " + e.problem());
+  }
   return w;
 }
 
 void addTileBlendOptions(CLI::App& sub, float& tileSize, float& blendExponent) {
   sub.add_option("--tile-size", tileSize, "tile-blend: triangle edge in exemplar pixels (0 = half the exemplar)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(finiteIn(0, 65536));
   sub.add_option("--blend-exponent", blendExponent, "tile-blend: sharpness of the blend between tiles (>= 1)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(finiteIn(1, 64));
 }
 
 void printJson(const nlohmann::json& document) {
@@ -131,7 +141,9 @@ double takePeakResidentMiB() {
   return peak;
 }
 
-double processPeakResidentMiB() { return processPeak; }
+double processPeakResidentMiB() {
+  return processPeak;
+}
 
 void say(const GlobalOptions& globals, const std::string& message) {
   if (!globals.quiet) std::fprintf(stderr, "%s\n", message.c_str());

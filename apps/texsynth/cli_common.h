@@ -7,9 +7,13 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "parameter_sources.h"
 #include "texsynth/core/progress.h"
 
 namespace texsynth::cli {
+
+// --threads above this is a typo, not a machine.
+inline constexpr int kMaxThreads = 1024;
 
 // Flags accepted by every subcommand (before or after the subcommand name).
 struct GlobalOptions {
@@ -19,11 +23,19 @@ struct GlobalOptions {
   bool json = false;
 };
 
-// A registered subcommand: its CLI11 parser and what to run once parsing succeeded.
+// A registered subcommand: its CLI11 parser, what to run once parsing succeeded, where its
+// library parameters came from, and the flags that drive its memory use ("--size or --window").
 struct Command {
   CLI::App* parser = nullptr;
   std::function<void()> run;
+  ParameterSources sources;
+  std::string memoryFlags;  // empty: no flag drives it
 };
+
+// Runs a parsed command so that its errors name what the user typed: a ParameterError on a
+// library parameter becomes one on its flag, or an InputError on the file its data came from;
+// running out of memory names the flags to lower.
+void runCommand(const Command& command);
 
 void addGlobalOptions(CLI::App& app, GlobalOptions& globals);
 
@@ -43,7 +55,8 @@ std::pair<float, float> parseFloatPair(const std::string& text, const std::strin
 // (openInterval: in (0, 1)). Throws ParameterError naming `flag`.
 std::pair<int, float> parseAxisPosition(const std::string& text, const std::string& flag, bool openInterval);
 
-// "X,Y,W,H": a window of an infinite texture (X, Y may be negative; W, H in 1..65536).
+// "X,Y,W,H": a window of an infinite texture (X, Y may be negative, the window within +-2^28 of
+// the origin as every random-access method needs; W, H in 1..65536).
 struct Window {
   std::int64_t x = 0, y = 0;
   int width = 0, height = 0;
@@ -66,6 +79,14 @@ std::string defaultCacheDirectory();
 // processPeakResidentMiB: the largest peak over all calls so far.
 double takePeakResidentMiB();
 double processPeakResidentMiB();
+
+// Marks an option (or positional) as naming files the subcommand writes, or reads. Before a run,
+// checkFileArguments checks every output destination (its directory exists and is writable),
+// that no two outputs are the same file and that no output is one of the inputs, so a typo or a
+// slip costs nothing and no input is ever overwritten.
+CLI::Option* outputFiles(CLI::Option* option);
+CLI::Option* inputFiles(CLI::Option* option);
+void checkFileArguments(const CLI::App& subcommand);
 
 // Short human-readable message on stderr, unless --quiet.
 void say(const GlobalOptions& globals, const std::string& message);

@@ -11,8 +11,11 @@
 #include "cli_common.h"
 #include "demo_fallbacks.h"
 #include "image_layout.h"
+#include "number_checks.h"
 #include "texsynth/core/atomic_file.h"
 #include "texsynth/core/data_paths.h"
+#include "texsynth/core/memory_budget.h"
+#include "texsynth/core/output_batch.h"
 #include "texsynth/eval/metrics.h"
 #include "texsynth/exemplar/analysis.h"
 #include "texsynth/exemplar/analysis_cache.h"
@@ -121,9 +124,19 @@ std::string markdownReport(const json& r) {
 }
 
 void runDemo(const DemoArgs& args, const GlobalOptions& globals) {
+  RenderOptions render;
+  render.width = render.height = args.renderSize;
+  const std::vector<std::pair<float, float>> views = {{30.0f, 20.0f}, {-60.0f, 15.0f}};
+  requireMemory(renderMemoryBytes(render, int(views.size())), "--render-size", "the rendered views");
   std::error_code ec;
-  fs::create_directories(args.outputDir, ec);
-  if (!fs::is_directory(args.outputDir)) throw OutputError(args.outputDir, "cannot create the output directory");
+  if (fs::exists(args.outputDir, ec) && !fs::is_directory(args.outputDir, ec))
+    throw OutputError(args.outputDir, "exists and is not a directory");
+  // Created through the run's batch: removed again, with everything staged in it, if the demo fails.
+  if (OutputBatch* batch = OutputBatch::active())
+    batch->createDirectories(args.outputDir);
+  else
+    fs::create_directories(args.outputDir, ec);
+  if (!fs::is_directory(args.outputDir, ec)) throw OutputError(args.outputDir, "cannot create the output directory");
   auto progress = makeProgress(globals);
   auto out = [&](const std::string& name) { return (fs::path(args.outputDir) / name).string(); };
   json report;
@@ -167,9 +180,6 @@ void runDemo(const DemoArgs& args, const GlobalOptions& globals) {
   if (meshPath.empty()) meshPath = cgalMesh(kDefaultMesh).value_or("");
   bool meshFallback = meshPath.empty();
   Mesh mesh = meshFallback ? makeUvSphereMesh(Vec3f::Zero(), 1.0f, 48, 96) : readMesh(meshPath);
-  RenderOptions render;
-  render.width = render.height = args.renderSize;
-  std::vector<std::pair<float, float>> views = {{30.0f, 20.0f}, {-60.0f, 15.0f}};
   start = std::chrono::steady_clock::now();
   progress->begin("rendering", 2);
   Image plain = renderViews(mesh, nullptr, views, render);
@@ -223,18 +233,22 @@ Command registerDemoCommand(CLI::App& app, const GlobalOptions& globals) {
                          "mesh (CGAL's bunny) plain and solid-textured, and write a report with pictures into DIR");
   auto args = std::make_shared<DemoArgs>();
   sub->add_option("-o,--output", args->outputDir, "Directory for the report and pictures")->capture_default_str();
-  sub->add_option("--exemplar", args->exemplar,
-                  std::string("Exemplar image (default: gimp-data's ") + kDefaultPattern + ")");
-  sub->add_option("--mesh", args->mesh, std::string("Mesh (default: libcgal-demo's ") + kDefaultMesh + ")");
+  inputFiles(sub->add_option("--exemplar", args->exemplar,
+                             std::string("Exemplar image (default: gimp-data's ") + kDefaultPattern + ")"));
+  inputFiles(sub->add_option("--mesh", args->mesh, std::string("Mesh (default: libcgal-demo's ") + kDefaultMesh + ")"));
   sub->add_option("--exemplar-size", args->exemplarSize, "Analyse the centre crop of this size")
       ->capture_default_str()
-      ->check(CLI::Range(16, 1024));
+      ->check(integerIn(16, 1024));
   sub->add_option("--render-size", args->renderSize, "Size of each rendered view")
       ->capture_default_str()
-      ->check(CLI::Range(16, 4096));
+      ->check(integerIn(16, 4096));
   sub->add_option("--cache", args->cacheDir,
                   "Directory of the exemplar-analysis cache (default: " + defaultCacheDirectory() + ")");
-  return {sub, [args, &globals] { runDemo(*args, globals); }};
+  const ParameterSources sources = {{"exemplar", fromFile(args->exemplar)}, {"image", fromFile(args->exemplar)},
+                                    {"mesh", fromFile(args->mesh)},         {"bounds", fromFile(args->mesh)},
+                                    {"box", fromFile(args->mesh)},          {"width", fromFlag("--render-size")},
+                                    {"height", fromFlag("--render-size")}};
+  return {sub, [args, &globals] { runDemo(*args, globals); }, sources, "--exemplar-size or --render-size"};
 }
 
 }  // namespace texsynth::cli

@@ -3,6 +3,8 @@
 #include <cstdio>
 
 #include "cli_common.h"
+#include "mode_flags.h"
+#include "number_checks.h"
 #include "texsynth/eval/metrics.h"
 #include "texsynth/io/file_kind.h"
 #include "texsynth/io/image_io.h"
@@ -37,20 +39,34 @@ Command registerEvalCommand(CLI::App& app, const GlobalOptions& globals) {
     MetricOptions options;
   };
   auto args = std::make_shared<Args>();
-  sub->add_option("EXEMPLAR", args->exemplar, "The exemplar image")->required();
-  sub->add_option("OUTPUT", args->output, "A synthesized image, or a volume (" + readableVolumeExtensions() + ")")
+  inputFiles(sub->add_option("EXEMPLAR", args->exemplar, "The exemplar image"))->required();
+  inputFiles(
+      sub->add_option("OUTPUT", args->output, "A synthesized image, or a volume (" + readableVolumeExtensions() + ")"))
       ->required();
   sub->add_option("--patch", args->options.patchSize, "Patch size (odd) for coherence, completeness and periodicity")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(integerIn(1, 63));
   sub->add_option("--periodicity-samples", args->options.periodicitySamples, "Output patches sampled for periodicity")
-      ->capture_default_str();
-  sub->add_option("--slices", args->options.slicesPerAxis, "Volumes: slices evaluated per axis")->capture_default_str();
+      ->capture_default_str()
+      ->check(integerIn(1, 100000));
+  sub->add_option("--slices", args->options.slicesPerAxis, "Volumes: slices evaluated per axis")
+      ->capture_default_str()
+      ->check(integerIn(1, 4096));
+  const ParameterSources sources = {
+      {"patchSize", fromFlag("--patch")},           {"periodicitySamples", fromFlag("--periodicity-samples")},
+      {"slicesPerAxis", fromFlag("--slices")},      {"exemplar", fromFile(args->exemplar)},
+      {"output", fromFile(args->output)},           {"volume", fromFile(args->output)},
+      {"histogramDistance", fromFile(args->output)}};
 
-  return {sub, [args, &globals] {
+  return {sub,
+          [sub, args, &globals] {
+            const bool volume = fileKind(args->output) == FileKind::Volume;
+            rejectFlagsOutsideMode(*sub, {{"--slices", {"volume OUTPUTs"}}}, volume ? "volume OUTPUTs" : "",
+                                   "when OUTPUT is an image");
             args->options.seed = globals.seed;
             Image exemplar = readImage(args->exemplar);
             json report = {{"exemplar", args->exemplar}, {"output", args->output}, {"patch", args->options.patchSize}};
-            if (fileKind(args->output) == FileKind::Volume) {
+            if (volume) {
               VolumeQuality q = evaluateVolume(exemplar, readVolume(args->output), args->options);
               report["x"] = toJson(q.axis[0]);
               report["y"] = toJson(q.axis[1]);
@@ -73,7 +89,8 @@ Command registerEvalCommand(CLI::App& app, const GlobalOptions& globals) {
             std::printf("periodicity  %8.3f   (lower is better; tiling scores high)\n", m.periodicity);
             std::printf("sharpness    %8.3f   (1 = as crisp as the exemplar; lower is blurrier)\n", m.sharpness);
             std::printf("time         %8.2fs\n", m.seconds);
-          }};
+          },
+          sources, "--patch (or give smaller images)"};
 }
 
 }  // namespace texsynth::cli

@@ -4,13 +4,17 @@
 #include <cstdio>
 
 #include "cli_common.h"
+#include "mode_flags.h"
+#include "number_checks.h"
 #include "texsynth/core/atomic_file.h"
+#include "texsynth/core/memory_budget.h"
 #include "texsynth/field/field_designer.h"
 #include "texsynth/field/field_io.h"
 #include "texsynth/field/field_render.h"
 #include "texsynth/io/file_kind.h"
 #include "texsynth/io/image_io.h"
 #include "texsynth/io/mesh_io.h"
+#include "texsynth/render/render_mesh.h"
 
 namespace texsynth::cli {
 
@@ -21,6 +25,10 @@ std::pair<int, float> parseCut(const std::string& text) {
   if (text == "none") return {-1, 0.0f};
   return parseAxisPosition(text, "--cut", true);
 }
+
+// The glyph render's flags do nothing without --render.
+const std::vector<ModeFlag> kFieldModeFlags = {
+    {"--render-size", {"--render"}}, {"--views", {"--render"}}, {"--glyphs", {"--render"}}, {"--cut", {"--render"}}};
 
 }  // namespace
 
@@ -37,43 +45,59 @@ Command registerFieldCommand(CLI::App& app, const GlobalOptions& globals) {
     double weight = 100;
   };
   auto args = std::make_shared<Args>();
-  sub->add_option("MESH", args->mesh, "Mesh the field covers (" + readableMeshExtensions() + ")")->required();
-  sub->add_option("--sketch", args->sketch, "Sketch curves, JSON (docs/sketch-format.md)")->required();
-  sub->add_option("-o,--output", args->output, "Field file to write (.tsfield)")->required();
-  sub->add_option("--grid", args->grid, "Grid cells along the bounding box's shortest side (paper: 20-30), 2..512")
-      ->capture_default_str();
-  sub->add_option("--margin", args->margin, "Space around the mesh, fraction of its longest side, 0..1")
-      ->capture_default_str();
-  sub->add_option("--weight", args->weight, "Constraint weight w of eq. 2 (paper: 100)")->capture_default_str();
+  inputFiles(sub->add_option("MESH", args->mesh, "Mesh the field covers (" + readableMeshExtensions() + ")"))
+      ->required();
+  inputFiles(sub->add_option("--sketch", args->sketch, "Sketch curves, JSON (docs/sketch-format.md)"))->required();
+  outputFiles(sub->add_option("-o,--output", args->output, "Field file to write (.tsfield)"))->required();
+  sub->add_option("--grid", args->grid, "Grid cells along the bounding box's shortest side (paper: 20-30)")
+      ->capture_default_str()
+      ->check(integerIn(2, 512));
+  sub->add_option("--margin", args->margin, "Space around the mesh, fraction of its longest side")
+      ->capture_default_str()
+      ->check(finiteIn(0, 1));
+  sub->add_option("--weight", args->weight,
+                  "Constraint weight w of eq. 2 (paper: 100; below 1 curves barely pin the field, above 1e4 the "
+                  "solver stops converging)")
+      ->capture_default_str()
+      ->check(finiteIn(kMinConstraintWeight, kMaxConstraintWeight));
   sub->add_option("--snap-tolerance", args->snap,
                   "Largest distance of a sketch point from the surface (or its plane), fraction of the mesh diagonal")
-      ->capture_default_str();
-  sub->add_option("--render", args->render,
-                  "Also render glyphs: the mesh, curves (yellow), x/y/z axes (red/green/blue)");
-  sub->add_option("--render-size", args->renderSize, "Pixel size of each rendered view")->capture_default_str();
-  sub->add_option("--views", args->views, "Surface views in the render (yaw steps of 90 degrees), 0..4")
-      ->capture_default_str();
-  sub->add_option("--glyphs", args->glyphs, "Glyphs across the mesh's longest side, 2..200")->capture_default_str();
+      ->capture_default_str()
+      ->check(finiteIn(1e-4, 1));
+  outputFiles(sub->add_option("--render", args->render,
+                              "Also render glyphs: the mesh, curves (yellow), x/y/z axes (red/green/blue)"));
+  sub->add_option("--render-size", args->renderSize, "Pixel size of each rendered view")
+      ->capture_default_str()
+      ->check(integerIn(16, 4096));
+  sub->add_option("--views", args->views, "Surface views in the render (yaw steps of 90 degrees)")
+      ->capture_default_str()
+      ->check(integerIn(0, 4));
+  sub->add_option("--glyphs", args->glyphs, "Glyphs across the mesh's longest side")
+      ->capture_default_str()
+      ->check(integerIn(2, 200));
   sub->add_option("--cut", args->cut, "Cut view: AXIS=FRACTION of the mesh extent (removes the +AXIS side), or none")
       ->capture_default_str();
 
-  return {sub, [args, &globals] {
+  const ParameterSources sources = {
+      {"shortestCells", fromFlag("--grid")},   {"margin", fromFlag("--margin")},
+      {"weight", fromFlag("--weight")},        {"snapTolerance", fromFlag("--snap-tolerance")},
+      {"glyphsAcross", fromFlag("--glyphs")},  {"views", fromFlag("--views")},
+      {"cutAxis", fromFlag("--cut")},          {"cutPosition", fromFlag("--cut")},
+      {"width", fromFlag("--render-size")},    {"height", fromFlag("--render-size")},
+      {"mesh", fromFile(args->mesh)},          {"bounds", fromFile(args->mesh)},
+      {"box", fromFile(args->mesh)},           {"axis", fromFile(args->sketch)},
+      {"positions", fromFile(args->sketch)},   {"rotations", fromFile(args->sketch)},
+      {"constraints", fromFile(args->sketch)}, {"normalAxis", fromFile(args->sketch)},
+      {"scales", fromFile(args->sketch)},      {"scalePoints", fromFile(args->sketch)}};
+  return {sub,
+          [sub, args, &globals] {
+            rejectFlagsOutsideMode(*sub, kFieldModeFlags, args->render.empty() ? "" : "--render", "without --render");
             FieldDesignOptions options;
             options.grid.shortestCells = args->grid;
             options.grid.margin = args->margin;
             options.solver.weight = args->weight;
             options.snapTolerance = args->snap;
-            // Every parameter is checked before any file is read, so a typo costs nothing.
-            try {
-              validateFieldDesignOptions(options);
-            } catch (const ParameterError& e) {
-              const std::string flag = e.parameter() == "shortestCells"   ? "--grid"
-                                       : e.parameter() == "margin"        ? "--margin"
-                                       : e.parameter() == "weight"        ? "--weight"
-                                       : e.parameter() == "snapTolerance" ? "--snap-tolerance"
-                                                                          : e.parameter();
-              throw ParameterError(flag, e.problem());
-            }
+            validateFieldDesignOptions(options);  // before any file is read, so a typo costs nothing
             if (fileExtension(args->output) != "tsfield")
               throw ParameterError("--output", "'" + args->output + "' must end in .tsfield");
             FieldRenderOptions renderOptions;
@@ -81,10 +105,6 @@ Command registerFieldCommand(CLI::App& app, const GlobalOptions& globals) {
               if (fileKind(args->render) != FileKind::Image)
                 throw ParameterError(
                     "--render", "'" + args->render + "' is not an image file name (" + readableImageExtensions() + ")");
-              if (args->renderSize < 16 || args->renderSize > 4096)
-                throw ParameterError("--render-size", "must be in [16, 4096]");
-              if (args->views < 0 || args->views > 4) throw ParameterError("--views", "must be in [0, 4]");
-              if (args->glyphs < 2 || args->glyphs > 200) throw ParameterError("--glyphs", "must be in [2, 200]");
               auto [axis, fraction] = parseCut(args->cut);
               renderOptions.showCut = axis >= 0;
               if (axis >= 0) renderOptions.cutAxis = axis, renderOptions.cutPosition = fraction;
@@ -94,6 +114,8 @@ Command registerFieldCommand(CLI::App& app, const GlobalOptions& globals) {
               renderOptions.glyphsAcross = args->glyphs;
               renderOptions.views.clear();
               for (int v = 0; v < args->views; ++v) renderOptions.views.push_back({30.0f + 90.0f * v, 20.0f});
+              requireMemory(renderMemoryBytes(renderOptions.render, args->views + (axis >= 0 ? 1 : 0)), "--render-size",
+                            "the rendered views");
             }
 
             Mesh mesh = readMesh(args->mesh);
@@ -132,7 +154,8 @@ Command registerFieldCommand(CLI::App& app, const GlobalOptions& globals) {
             }
             report["output"] = args->output;
             if (globals.json) printJson(report);
-          }};
+          },
+          sources, "--grid or --render-size"};
 }
 
 }  // namespace texsynth::cli

@@ -5,6 +5,10 @@
 #include <cstdio>
 
 #include "image_args.h"
+#include "mode_flags.h"
+#include "number_checks.h"
+#include "texsynth/core/atomic_file.h"
+#include "texsynth/core/memory_budget.h"
 #include "texsynth/image/make_tileable.h"
 #include "texsynth/image/tile_blend.h"
 #include "texsynth/image/tile_deform.h"
@@ -34,14 +38,89 @@ Image prepareExemplar(const ImageArgs& args, json& report) {
     report["seam_ratio_after"] = measureSeams(exemplar).ratio();
   }
   report["made_tileable"] = convert;
-  if (!args.saveTileable.empty()) writeImage(args.saveTileable, exemplar);
+  if (!args.saveTileable.empty())
+    writeImage(args.saveTileable, exemplar, writeOptionsKeeping(readImageInfo(args.exemplar)));
   return exemplar;
 }
 
 void finish(const ImageArgs& args, const GlobalOptions& globals, const Window& window, Image result, double seconds,
             json& report);
 
-void runImage(const ImageArgs& args, const GlobalOptions& globals) {
+const std::vector<std::string> kSynthesisModes = {"tile-deform", "tile-blend", "parallel", "optimize"};
+
+// Which modes (a --method, or --apply-coords) use each mode-specific flag.
+const std::vector<ModeFlag> kImageModeFlags = {
+    {"--method", kSynthesisModes},
+    {"--size", kSynthesisModes},
+    {"--window", {"tile-deform", "tile-blend", "parallel"}},  // optimize solves for a whole image at once
+    {"--tileable", kSynthesisModes},
+    {"--seam-threshold", kSynthesisModes},
+    {"--save-tileable", kSynthesisModes},
+    {"--cell", {"tile-deform"}},
+    {"--lambda", {"tile-deform"}},
+    {"--clamp", {"tile-deform"}},
+    {"--noise-frequency", {"tile-deform"}},
+    {"--directions", {"tile-deform"}},
+    {"--tile-size", {"tile-blend"}},
+    {"--blend-exponent", {"tile-blend"}},
+    {"--passes", {"parallel"}},
+    {"--subpasses", {"parallel"}},
+    {"--jitter", {"parallel", "optimize"}},
+    {"--levels", {"parallel", "optimize"}},
+    {"--neighborhood", {"parallel", "optimize"}},
+    {"-k", {"parallel", "optimize"}},
+    {"--coords", {"parallel", "optimize"}},
+    {"--solver", {"optimize"}},
+    {"--iterations", {"optimize"}},
+};
+
+// Where the library's parameters come from on `image`'s command line.
+ParameterSources imageParameterSources(const ImageArgs& args) {
+  return {{"exemplar", fromFile(args.exemplar)},
+          {"image", fromFile(args.exemplar)},
+          {"channels", fromFile(args.exemplar)},
+          {"width", fromFlag("--size")},
+          {"height", fromFlag("--size")},
+          {"x0", fromFlag("--window")},
+          {"y0", fromFlag("--window")},
+          {"cellWidth", fromFlag("--cell")},
+          {"cellHeight", fromFlag("--cell")},
+          {"lambdaX", fromFlag("--lambda")},
+          {"lambdaY", fromFlag("--lambda")},
+          {"maxDisplacement", fromFlag("--clamp")},
+          {"noiseFrequency", fromFlag("--noise-frequency")},
+          {"tileSize", fromFlag("--tile-size")},
+          {"weightExponent", fromFlag("--blend-exponent")},
+          {"passes", fromFlag("--passes")},
+          {"subpasses", fromFlag("--subpasses")},
+          {"jitter", fromFlag("--jitter")},
+          {"levels", fromFlag("--levels")},
+          {"levelCount", fromFlag("--levels")},
+          {"neighborhood", fromFlag("--neighborhood")},
+          {"neighborhoodSize", fromFlag("--neighborhood")},
+          {"levelNeighborhoodSizes", fromFlag("--neighborhood")},
+          {"similarCount", fromFlag("-k")},
+          {"solver", fromFlag("--solver")},
+          {"iterations", fromFlag("--iterations")}};
+}
+
+// Source coordinates are pixel indices into exemplars of up to 65536 pixels a side: only float
+// EXR holds them exactly (8 and 16-bit formats would clamp and round them).
+void requireCoordinateFile(const std::string& path, const std::string& flag) {
+  if (!path.empty() && fileExtension(path) != "exr")
+    throw ParameterError(flag, "'" + path + "': source coordinates are stored only as float EXR (.exr)");
+}
+
+// Refuses, before any work, an output too big for this machine. Peak bytes per output pixel, measured at 512² and
+// 1024² (`/usr/bin/time -f %M`), rounded up: the float result, the method's own maps, and the encoder's buffers.
+void requireImageMemory(const ImageArgs& args, const Window& window) {
+  const double bytesPerPixel = args.method == "optimize" && args.applyCoords.empty() ? 128.0 : 64.0;
+  requireMemory(double(window.width) * double(window.height) * bytesPerPixel,
+                args.window.empty() ? "--size" : "--window",
+                "a " + std::to_string(window.width) + "x" + std::to_string(window.height) + " image");
+}
+
+void runImage(const CLI::App& parser, const ImageArgs& args, const GlobalOptions& globals) {
   if (fileKind(args.output) != FileKind::Image)
     throw ParameterError("--output",
                          "'" + args.output + "' is not an image file name (" + readableImageExtensions() + ")");
@@ -52,6 +131,12 @@ void runImage(const ImageArgs& args, const GlobalOptions& globals) {
     Size2 size = parseSize(args.size, "--size");
     window.width = size.width, window.height = size.height;
   }
+  requireImageMemory(args, window);
+  const std::string mode = args.applyCoords.empty() ? args.method : "--apply-coords";
+  rejectFlagsOutsideMode(parser, kImageModeFlags, mode,
+                         "with " + (args.applyCoords.empty() ? "--method " + mode : mode));
+  requireCoordinateFile(args.coords, "--coords");
+  requireCoordinateFile(args.applyCoords, "--apply-coords");
   json report = {{"exemplar", args.exemplar}, {"method", args.method}, {"seed", globals.seed}};
   if (!args.applyCoords.empty()) {
     report["method"] = "apply-coords";
@@ -60,8 +145,6 @@ void runImage(const ImageArgs& args, const GlobalOptions& globals) {
     window.width = result.width, window.height = result.height;
     return finish(args, globals, window, std::move(result), 0.0, report);
   }
-  if (args.method == "optimize" && !args.window.empty())
-    throw ParameterError("--window", "optimize solves for a whole image at once (it is not random access); use --size");
   Image exemplar = prepareExemplar(args, report);
 
   auto start = std::chrono::steady_clock::now();
@@ -95,7 +178,14 @@ void runImage(const ImageArgs& args, const GlobalOptions& globals) {
 // Writes the result and reports it.
 void finish(const ImageArgs& args, const GlobalOptions& globals, const Window& window, Image result, double seconds,
             json& report) {
-  writeImage(args.output, result);
+  // Keeps the exemplar's precision where the format can: a 16-bit input gives a 16-bit PNG, an
+  // 8-bit one a half-float EXR; other formats store 8 bits, which the user is told.
+  const ImageFileInfo exemplarInfo = readImageInfo(args.exemplar);
+  writeImage(args.output, result, writeOptionsKeeping(exemplarInfo));
+  const std::string ext = fileExtension(args.output);
+  if (exemplarInfo.bitsPerChannel > 8 && ext != "png" && ext != "exr")
+    say(globals, "note: " + args.output + " stores 8 bits per channel, the exemplar has " +
+                     std::to_string(exemplarInfo.bitsPerChannel) + "; write .png or .exr to keep them");
 
   report["window"] = {window.x, window.y, window.width, window.height};
   report["seconds"] = seconds;
@@ -128,14 +218,15 @@ Command registerImageCommand(CLI::App& app, const GlobalOptions& globals) {
       "With --apply-coords COORDS.exr, EXEMPLAR is another map of the same material (normal, roughness ...) and the "
       "stored synthesis (from --coords) is re-applied to it.");
   auto args = std::make_shared<ImageArgs>();
-  sub->add_option("EXEMPLAR", args->exemplar, "Exemplar image")->required();
-  sub->add_option("-o,--output", args->output, "Output image (.png .jpg .exr ...)")->required();
+  inputFiles(sub->add_option("EXEMPLAR", args->exemplar, "Exemplar image"))->required();
+  outputFiles(sub->add_option("-o,--output", args->output, "Output image (.png .jpg .exr ...)"))->required();
   sub->add_option("--method", args->method, "Synthesis method")
       ->capture_default_str()
       ->check(CLI::IsMember({"tile-deform", "tile-blend", "parallel", "optimize"}));
   sub->add_option("--size", args->size, "Output size WxH or N (the window at the origin)")->capture_default_str();
   sub->add_option("--window", args->window,
-                  "X,Y,W,H: the window of the infinite texture to compute (overrides --size)");
+                  "X,Y,W,H: the window of the infinite texture to compute (overrides --size); within +-2^28 of the "
+                  "origin");
   sub->add_option("--tileable", args->tileable,
                   "Make the exemplar tileable first (minimum-error cut across its wrap edges): auto = when its seams "
                   "are visible (seam ratio above --seam-threshold)")
@@ -143,8 +234,10 @@ Command registerImageCommand(CLI::App& app, const GlobalOptions& globals) {
       ->check(CLI::IsMember({"auto", "always", "never"}));
   sub->add_option("--seam-threshold", args->seamThreshold,
                   "Seam ratio (wrap-edge difference / interior difference) above which 'auto' converts")
-      ->capture_default_str();
-  sub->add_option("--save-tileable", args->saveTileable, "Also write the (possibly converted) exemplar here");
+      ->capture_default_str()
+      ->check(finiteIn(0, 1e6));
+  outputFiles(
+      sub->add_option("--save-tileable", args->saveTileable, "Also write the (possibly converted) exemplar here"));
   auto* deform = "tile-deform";
   sub->add_option("--cell", args->cell,
                   std::string(deform) + ": grid cell size SX[,SY] in pixels (0 = a quarter of the exemplar)")
@@ -152,15 +245,20 @@ Command registerImageCommand(CLI::App& app, const GlobalOptions& globals) {
   sub->add_option("--lambda", args->lambda,
                   std::string(deform) + ": noise factors LX[,LY] (displacement = noise * lambda * cell)")
       ->capture_default_str();
-  sub->add_option("--clamp", args->clamp, std::string(deform) + ": largest displacement as a fraction of the cell")
-      ->capture_default_str();
+  sub->add_option("--clamp", args->clamp,
+                  std::string(deform) + ": largest displacement as a fraction of the cell (< 0.5, so cells never fold)")
+      ->capture_default_str()
+      ->check(finiteIn(0, 0.5, true));
   sub->add_option("--noise-frequency", args->noiseFrequency, std::string(deform) + ": noise periods per grid cell")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(finiteIn(0.001, 1000));
   sub->add_option("--directions", args->directions, std::string(deform) + ": deform both axes, or only x or only y")
       ->capture_default_str()
       ->check(CLI::IsMember({"both", "x", "y"}));
   addTileBlendOptions(*sub, args->tileSize, args->blendExponent);
-  sub->add_option("--passes", args->passes, "parallel: correction passes per level")->capture_default_str();
+  sub->add_option("--passes", args->passes, "parallel: correction passes per level")
+      ->capture_default_str()
+      ->check(integerIn(0, 16));
   sub->add_option("--jitter", args->jitter,
                   "parallel: jitter strength for all levels, or COARSEST,OTHERS (default 0.4 everywhere; raise the "
                   "coarsest to break large-scale repetition). optimize: jitter of the levels after the coarsest "
@@ -171,25 +269,32 @@ Command registerImageCommand(CLI::App& app, const GlobalOptions& globals) {
       ->check(CLI::IsMember({"discrete", "least-squares"}));
   sub->add_option("--levels", args->levels,
                   "parallel, optimize: Gaussian stack levels (0 = as many as the exemplar allows; default: parallel 0, "
-                  "optimize 3 as Han et al.)");
+                  "optimize 3 as Han et al.)")
+      ->check(integerIn(0, 16));
   sub->add_option("--neighborhood", args->neighborhoods,
                   "parallel: neighborhood size N per level, coarsest first, the last repeating (default 5, as L&H "
                   "2005; e.g. 5,7). optimize: sizes run in turn at every level (default 17,9, Han et al. Table 2)");
   sub->add_option("--iterations", args->iterations,
                   "optimize: most E+M iterations per level and neighborhood size (stops when no match changes)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(integerIn(1, 100));
   sub->add_option("-k,--similar", args->similarCount,
-                  "parallel, optimize: k of the k-coherence similarity sets (default: parallel 2, optimize 4)");
+                  "parallel, optimize: k of the k-coherence similarity sets (default: parallel 2, optimize 4)")
+      ->check(integerIn(1, 64));
   sub->add_option("--subpasses", args->subpasses,
                   "parallel: s, for s^2 subpasses per correction pass (1 = all pixels at once)")
-      ->capture_default_str();
-  sub->add_option("--coords", args->coords,
-                  "parallel, optimize (discrete): also write the synthesized source coordinates (x, y into the "
-                  "exemplar as used, i.e. after --tileable conversion: see --save-tileable) to this .exr");
-  sub->add_option("--apply-coords", args->applyCoords,
-                  "Re-apply a synthesis: look EXEMPLAR (another map of the same material, the size of the original "
-                  "exemplar) up at the coordinates in this .exr (from --coords); no synthesis runs");
-  return {sub, [args, &globals] { runImage(*args, globals); }};
+      ->capture_default_str()
+      ->check(integerIn(1, 4));
+  outputFiles(
+      sub->add_option("--coords", args->coords,
+                      "parallel, optimize (discrete): also write the synthesized source coordinates (x, y into the "
+                      "exemplar as used, i.e. after --tileable conversion: see --save-tileable) to this .exr"));
+  inputFiles(
+      sub->add_option("--apply-coords", args->applyCoords,
+                      "Re-apply a synthesis: look EXEMPLAR (another map of the same material, the size of the original "
+                      "exemplar) up at the coordinates in this .exr (from --coords); no synthesis runs"));
+  return {sub, [sub, args, &globals] { runImage(*sub, *args, globals); }, imageParameterSources(*args),
+          "--size or --window"};
 }
 
 }  // namespace texsynth::cli

@@ -91,7 +91,8 @@ Command registerInfoCommand(CLI::App& app, const GlobalOptions& globals) {
                   "Image (" + readableImageExtensions() + "), mesh (" + readableMeshExtensions() + "), volume (" +
                       readableVolumeExtensions() + ") or rotation field (" + readableFieldExtensions() + ")")
       ->required();
-  return {sub, [path, &globals] {
+  return {sub,
+          [path, &globals] {
             json d;
             switch (fileKind(*path)) {
               case FileKind::Image:
@@ -117,7 +118,9 @@ Command registerInfoCommand(CLI::App& app, const GlobalOptions& globals) {
               printJson(d);
             else
               printHuman(*path, d);
-          }};
+          },
+          {{"mesh", fromFile(*path)}, {"image", fromFile(*path)}, {"volume", fromFile(*path)}},
+          ""};
 }
 
 }  // namespace texsynth::cli

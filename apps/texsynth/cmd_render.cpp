@@ -1,5 +1,8 @@
 // texsynth render MESH|VOLUME -o view.png: a shaded picture of a mesh, or a slice montage of a volume.
 #include "cli_common.h"
+#include "mode_flags.h"
+#include "number_checks.h"
+#include "texsynth/core/memory_budget.h"
 #include "texsynth/io/file_kind.h"
 #include "texsynth/io/image_io.h"
 #include "texsynth/io/mesh_io.h"
@@ -19,19 +22,42 @@ Command registerRenderCommand(CLI::App& app, const GlobalOptions& globals) {
     int views = 1, supersample = 2;
   };
   auto args = std::make_shared<Args>();
-  sub->add_option("INPUT", args->input,
-                  "Mesh (" + readableMeshExtensions() + ") or volume (" + readableVolumeExtensions() + ")")
+  inputFiles(sub->add_option("INPUT", args->input,
+                             "Mesh (" + readableMeshExtensions() + ") or volume (" + readableVolumeExtensions() + ")"))
       ->required();
-  sub->add_option("-o,--output", args->output, "Output image (.png .jpg .exr ...)")->required();
+  outputFiles(sub->add_option("-o,--output", args->output, "Output image (.png .jpg .exr ...)"))->required();
   sub->add_option("--size", args->size, "Image size of one view, WxH or N")->capture_default_str();
-  sub->add_option("--yaw", args->yaw, "Camera yaw around the vertical axis, degrees")->capture_default_str();
-  sub->add_option("--pitch", args->pitch, "Camera elevation, degrees")->capture_default_str();
+  sub->add_option("--yaw", args->yaw, "Camera yaw around the vertical axis, degrees")
+      ->capture_default_str()
+      ->check(finiteIn(-360, 360));
+  sub->add_option("--pitch", args->pitch, "Camera elevation, degrees")->capture_default_str()->check(finiteIn(-90, 90));
   sub->add_option("--views", args->views, "Views side by side (1 = the given yaw; 4 = yaw, yaw+90, ...)")
       ->capture_default_str()
-      ->check(CLI::IsMember({1, 2, 3, 4}));
-  sub->add_option("--supersample", args->supersample, "Samples per pixel side (anti-aliasing)")->capture_default_str();
+      ->check(integerIn(1, 4));
+  sub->add_option("--supersample", args->supersample, "Samples per pixel side (anti-aliasing)")
+      ->capture_default_str()
+      ->check(integerIn(1, 16));
+  // The camera's flags do nothing for a volume's slice montage.
+  const std::vector<ModeFlag> meshOnly = {{"--size", {"meshes"}},
+                                          {"--yaw", {"meshes"}},
+                                          {"--pitch", {"meshes"}},
+                                          {"--views", {"meshes"}},
+                                          {"--supersample", {"meshes"}}};
+  const ParameterSources sources = {{"width", fromFlag("--size")},
+                                    {"height", fromFlag("--size")},
+                                    {"supersample", fromFlag("--supersample")},
+                                    {"yawDegrees", fromFlag("--yaw")},
+                                    {"pitchDegrees", fromFlag("--pitch")},
+                                    {"mesh", fromFile(args->input)},
+                                    {"bounds", fromFile(args->input)},
+                                    {"box", fromFile(args->input)},
+                                    {"volume", fromFile(args->input)},
+                                    {"scale", fromFile(args->input)}};
 
-  return {sub, [args, &globals] {
+  return {sub,
+          [sub, meshOnly, args, &globals] {
+            rejectFlagsOutsideMode(*sub, meshOnly, fileKind(args->input) == FileKind::Volume ? "" : "meshes",
+                                   "for a volume");
             // Check the output format before the work, so a typo costs nothing.
             if (fileKind(args->output) != FileKind::Image)
               throw ParameterError(
@@ -46,6 +72,7 @@ Command registerRenderCommand(CLI::App& app, const GlobalOptions& globals) {
                 options.yawDegrees = args->yaw;
                 options.pitchDegrees = args->pitch;
                 options.supersample = args->supersample;
+                requireMemory(renderMemoryBytes(options, args->views), "--size", "the rendered views");
                 Mesh mesh = readMesh(args->input);
                 std::vector<std::pair<float, float>> views;
                 for (int v = 0; v < args->views; ++v) views.push_back({args->yaw + 90.0f * v, args->pitch});
@@ -61,7 +88,8 @@ Command registerRenderCommand(CLI::App& app, const GlobalOptions& globals) {
             }
             writeImage(args->output, picture);
             say(globals, "wrote " + args->output);
-          }};
+          },
+          sources, "--size or --supersample"};
 }
 
 }  // namespace texsynth::cli

@@ -6,8 +6,11 @@
 #include <mutex>
 #include <optional>
 
+#include "mode_flags.h"
+#include "number_checks.h"
 #include "solid_args.h"
 #include "texsynth/core/atomic_file.h"
+#include "texsynth/core/memory_budget.h"
 #include "texsynth/field/mesh_cut.h"
 #include "texsynth/io/file_kind.h"
 #include "texsynth/io/image_io.h"
@@ -101,6 +104,33 @@ void checkOutputs(const SolidArgs& args) {
     throw ParameterError("--output", "nothing to write: give -o (mesh, slice or volume), --render or --surface");
 }
 
+// Refuses, before any synthesis, volumes and renders too big for this machine. Peak bytes per voxel, measured with
+// `/usr/bin/time -f %M` and rounded up: a lazy volume keeps its pyramid's block caches (0.8 GB at 128³, 3.6 GB at 256³,
+// README), the others the float volume and its encoding.
+void requireSolidMemory(const SolidArgs& args, const Box3f& box) {
+  const bool volume = std::any_of(args.outputs.begin(), args.outputs.end(), [](const std::string& out) {
+    const std::string ext = fileExtension(out);
+    return ext == "nrrd" || ext == "vdb";
+  });
+  if (volume) {
+    double voxels = 1;
+    for (int a = 0; a < 3; ++a)
+      voxels *= std::max(1.0, std::ceil(double(args.resolution) * box.size()[a] / box.size().maxCoeff()));
+    requireMemory(voxels * (args.method == "lazy" ? 400.0 : 32.0), "--resolution",
+                  "a volume of " + std::to_string(std::int64_t(voxels)) + " voxels");
+  }
+  // A lazy slice synthesizes a slab around it at every level: 1.9 GB for a 512x506 cut through the bunny (README).
+  if (args.method == "lazy" && !args.slices.empty())
+    requireMemory(double(args.resolution) * args.resolution * 8000.0, "--resolution",
+                  "lazy slices of " + std::to_string(args.resolution) + "x" + std::to_string(args.resolution));
+  if (!args.render.empty()) {
+    RenderOptions options;
+    options.width = options.height = args.renderSize;
+    requireMemory(renderMemoryBytes(options, args.views + (args.cut.empty() ? 0 : 1)), "--render-size",
+                  "the rendered views");
+  }
+}
+
 std::unique_ptr<SolidTexture> makeSolid(const SolidArgs& args, const Mesh& mesh, const Box3f& box, std::uint64_t seed,
                                         json& report, LazyBuild& lazy) {
   const std::string& exemplar = args.exemplars.front();
@@ -120,10 +150,6 @@ std::unique_ptr<SolidTexture> makeSolid(const SolidArgs& args, const Mesh& mesh,
   }
   if (args.exemplars.size() > 1)
     throw ParameterError("EXEMPLAR", "only --method lazy takes three exemplars (XY YZ ZX)");
-  if (!args.inner.empty()) throw ParameterError("--inner", "only --method lazy fills regions");
-  if (!args.field.empty()) throw ParameterError("--field", "only --method lazy follows a field");
-  if (!args.sketch.empty()) throw ParameterError("--sketch", "only --method lazy follows a sketched field");
-  if (!args.masks.empty()) throw ParameterError("--mask", "only --method lazy matches feature masks");
 
   if (args.method == "tile-blend") {
     if (volumeExemplar) throw ParameterError("--method", "tile-blend takes a 2D exemplar, not a volume");
@@ -153,7 +179,66 @@ std::unique_ptr<SolidTexture> makeSolid(const SolidArgs& args, const Mesh& mesh,
                         : makeStackedTileDeformSolid(std::move(image), options);
 }
 
-void runSolid(const SolidArgs& args, const GlobalOptions& globals) {
+// Which methods use each method-specific flag.
+const std::vector<ModeFlag> kSolidModeFlags = {
+    {"--stack", {"tile-deform"}},
+    {"--cell", {"tile-deform"}},
+    {"--lambda", {"tile-deform"}},
+    {"--clamp", {"tile-deform"}},
+    {"--noise-scale", {"tile-deform"}},
+    {"--sharpness", {"tile-deform", "tile-blend"}},
+    {"--tile-size", {"tile-blend"}},
+    {"--blend-exponent", {"tile-blend"}},
+    {"--field", {"lazy"}},
+    {"--sketch", {"lazy"}},
+    {"--mask", {"lazy"}},
+    {"--inner", {"lazy"}},
+    {"--shell", {"lazy"}},
+    {"--levels", {"lazy"}},
+    {"--passes", {"lazy"}},
+    {"--coarsest-passes", {"lazy"}},
+    {"--dual-grid", {"lazy"}},
+    {"--grid-cell", {"lazy"}},
+};
+
+// Where the library's parameters come from on `solid`'s command line.
+ParameterSources solidParameterSources(const SolidArgs& args) {
+  return {{"exemplar", fromFiles(args.exemplars)},
+          {"featureMask", fromFiles(args.masks)},
+          {"bounds", fromFile(args.mesh)},
+          {"box", fromFile(args.mesh)},
+          {"mesh", fromFile(args.mesh)},
+          {"tiles", fromFlag("--tiles")},
+          {"points", fromFlag("--tiles")},  // the mesh spans --tiles exemplars: too many leave lazy's range
+          {"voxels", fromFlag("--tiles")},
+          {"resolution", fromFlag("--resolution")},
+          {"axis", fromFlag("--slice")},
+          {"position", fromFlag("--slice")},
+          {"cutAxis", fromFlag("--cut")},
+          {"cutPosition", fromFlag("--cut")},
+          {"width", fromFlag("--render-size")},
+          {"height", fromFlag("--render-size")},
+          {"blendSharpness", fromFlag("--sharpness")},
+          {"deformation.cellSize", fromFlag("--cell")},
+          {"deformation.lambda", fromFlag("--lambda")},
+          {"deformation.clamp", fromFlag("--clamp")},
+          {"deformation.noiseScale", fromFlag("--noise-scale")},
+          {"tileSize", fromFlag("--tile-size")},
+          {"weightExponent", fromFlag("--blend-exponent")},
+          {"levels", fromFlag("--levels")},
+          {"passes", fromFlag("--passes")},
+          {"coarsestPasses", fromFlag("--coarsest-passes")},
+          {"gridCellSize", fromFlag("--grid-cell")},
+          {"depth", fromFlag("--shell")}};
+}
+
+void runSolid(const CLI::App& parser, const SolidArgs& args, const GlobalOptions& globals) {
+  rejectFlagsOutsideMode(parser, kSolidModeFlags, args.method, "with --method " + args.method);
+  rejectFlagsOutsideMode(parser, {{"--render-size", {"--render"}}, {"--views", {"--render"}}},
+                         args.render.empty() ? "" : "--render", "without --render");
+  rejectFlagsOutsideMode(parser, {{"--shell", {"--inner"}}}, args.inner.empty() ? "" : "--inner", "without --inner");
+  rejectFlagsOutsideMode(parser, {{"--grid-cell", {"--dual-grid"}}}, args.dualGrid ? "--dual-grid" : "",
+                         "with --no-dual-grid");
   checkOutputs(args);
   std::vector<std::pair<int, float>> slices;
   for (const std::string& s : args.slices) slices.push_back(parseAxisPosition(s, "--slice", false));
@@ -176,6 +261,15 @@ void runSolid(const SolidArgs& args, const GlobalOptions& globals) {
     mesh = readMesh(args.mesh);
     box = mesh.bounds();
   }
+  requireSolidMemory(args, box);
+  std::vector<Vec3f> surfacePoints;
+  if (args.surface > 0) {
+    surfacePoints = surfaceVoxelCenters(mesh, box, args.surface);
+    // A lazy surface synthesizes the voxels its finer levels' corrections read: 4.4 GB for the bunny's 825k surface
+    // voxels at 512 (README), about 5.3 KB each.
+    requireMemory(double(surfacePoints.size()) * (args.method == "lazy" ? 6000.0 : 64.0), "--surface",
+                  "the " + std::to_string(surfacePoints.size()) + " voxels of the surface");
+  }
   LazyBuild lazy;
   std::unique_ptr<SolidTexture> solid = makeSolid(args, mesh, box, globals.seed, report, lazy);
   report["setup_seconds"] = lap();
@@ -183,7 +277,7 @@ void runSolid(const SolidArgs& args, const GlobalOptions& globals) {
   if (!lazy.parts.empty())  // the work so far: the coarsest level over the box (separate from what follows)
     report["coarsest_level"]["lazy"] = lazyStats(lazy);
   if (args.surface > 0) {  // the whole surface at a resolution: synthesized and evaluated, for timing
-    std::vector<Vec3f> points = surfaceVoxelCenters(mesh, box, args.surface);
+    const std::vector<Vec3f>& points = surfacePoints;
     solid->prepare(points);
     const double prepared = lap();
     solid->evaluateColors(points);
@@ -275,90 +369,103 @@ Command registerSolidCommand(CLI::App& app, const GlobalOptions& globals) {
       "--mesh, .png .jpg .exr the next --slice, .nrrd .vdb the volume over the mesh's box (or the unit cube) at "
       "--resolution.");
   auto args = std::make_shared<SolidArgs>();
-  sub->add_option("EXEMPLAR", args->exemplars,
-                  "2D exemplar image, or a 3D exemplar volume (.nrrd); lazy also takes three: XY YZ ZX (the planes' "
-                  "exemplars)")
+  inputFiles(sub->add_option(
+                 "EXEMPLAR", args->exemplars,
+                 "2D exemplar image, or a 3D exemplar volume (.nrrd); lazy also takes three: XY YZ ZX (the planes' "
+                 "exemplars)"))
       ->required()
       ->expected(1, 3);
   sub->add_option("--method", args->method, "Synthesis method")
       ->capture_default_str()
       ->check(CLI::IsMember({"tile-deform", "tile-blend", "lazy"}));
-  sub->add_option("--mesh", args->mesh, "Mesh to texture (.obj .ply .off .stl)");
-  sub->add_option("-o,--output", args->outputs, "Output file(s): colored mesh, slice image(s) or volume");
-  sub->add_option_function<std::string>(
+  inputFiles(sub->add_option("--mesh", args->mesh, "Mesh to texture (.obj .ply .off .stl)"));
+  outputFiles(sub->add_option("-o,--output", args->outputs, "Output file(s): colored mesh, slice image(s) or volume"));
+  outputFiles(sub->add_option_function<std::string>(
       "--volume", [args](const std::string& file) { args->outputs.push_back(file); },
-      "Write the volume (.nrrd or .vdb) at --resolution; the same as -o FILE");
+      "Write the volume (.nrrd or .vdb) at --resolution; the same as -o FILE"));
   sub->add_option("--slice", args->slices, "AXIS=POSITION in [0,1] across the box, e.g. z=0.5 (one image -o each)");
   sub->add_option("--resolution", args->resolution, "Voxels along the box's longest side, for slices and volumes")
       ->capture_default_str()
-      ->check(CLI::Range(1, 4096));
+      ->check(integerIn(1, 4096));
   sub->add_option("--surface", args->surface,
                   "Synthesize the whole --mesh surface at this resolution (every voxel it passes through, voxels as "
                   "for --resolution) and report the time and voxel count in --stats / --json")
-      ->check(CLI::Range(1, 4096));
-  sub->add_option("--render", args->render, "Render the textured --mesh (colors evaluated per pixel) to this image");
+      ->check(integerIn(1, 4096));
+  outputFiles(sub->add_option("--render", args->render,
+                              "Render the textured --mesh (colors evaluated per pixel) to this image"));
   sub->add_option("--render-size", args->renderSize, "Size of each rendered view")
       ->capture_default_str()
-      ->check(CLI::Range(16, 8192));
+      ->check(integerIn(16, 8192));
   sub->add_option("--views", args->views, "Rendered views side by side, 90 degrees apart")
       ->capture_default_str()
-      ->check(CLI::Range(1, 4));
+      ->check(integerIn(1, 4));
   sub->add_option("--tiles", args->tiles, "Exemplar tiles across the longest side of the box (texture scale)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(finiteIn(0.01, 1000));
   sub->add_flag("--float-volume", args->floatVolume, "Write .nrrd volumes as 32-bit floats instead of 8-bit");
-  sub->add_option("--stats", args->stats, "Write timings and settings as JSON here");
+  outputFiles(sub->add_option("--stats", args->stats, "Write timings and settings as JSON here"));
   sub->add_option("--stack", args->stack, "tile-deform with a 2D exemplar: stack along x, y, z or all three (xyz)")
       ->capture_default_str()
       ->check(CLI::IsMember({"x", "y", "z", "xyz"}));
   sub->add_option("--sharpness", args->sharpness,
                   "p of the normal blend w_i = (n.i)^(2p) (three-axis stacking, tile-blend)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(finiteIn(0.01, 64));
   sub->add_option("--cell", args->cell,
                   "tile-deform: grid cell size in exemplar pixels, S or SX,SY,SZ (0 = a quarter of the exemplar)")
       ->capture_default_str();
   sub->add_option("--lambda", args->lambda,
                   "tile-deform: noise factors L or LX,LY,LZ (0 on an axis: no deformation along it)")
       ->capture_default_str();
-  sub->add_option("--clamp", args->clamp, "tile-deform: largest displacement as a fraction of the cell (< 0.5)")
-      ->capture_default_str();
+  sub->add_option("--clamp", args->clamp,
+                  "tile-deform: largest displacement as a fraction of the cell (< 0.5, so cells never fold)")
+      ->capture_default_str()
+      ->check(finiteIn(0, 0.5, true));
   sub->add_option("--noise-scale", args->noiseScale, "tile-deform: grid cells per noise lattice spacing")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(finiteIn(0.001, 1000));
   addTileBlendOptions(*sub, args->tileSize, args->blendExponent);
-  auto* field =
-      sub->add_option("--field", args->field, "lazy: rotation field (.tsfield from `texsynth field`) the texture follows");
-  sub->add_option("--inner", args->inner,
-                  "lazy with --mesh: exemplar for everything deeper than --shell below the surface (the paper's tree: "
-                  "bark outside, wood inside)");
+  auto* field = inputFiles(sub->add_option(
+      "--field", args->field, "lazy: rotation field (.tsfield from `texsynth field`) the texture follows"));
+  inputFiles(sub->add_option(
+      "--inner", args->inner,
+      "lazy with --mesh: exemplar for everything deeper than --shell below the surface (the paper's tree: "
+      "bark outside, wood inside)"));
   sub->add_option("--shell", args->shell,
                   "lazy with --inner: depth of the outer region, as a fraction of the mesh's bounding-box diagonal")
-      ->capture_default_str();
-  sub->add_option("--levels", args->levels, "lazy: pyramid levels L")->capture_default_str()->check(CLI::Range(1, 8));
+      ->capture_default_str()
+      ->check(finiteIn(1e-4, 1, true));
+  sub->add_option("--levels", args->levels, "lazy: pyramid levels L")->capture_default_str()->check(integerIn(1, 8));
   sub->add_option("--passes", args->passes, "lazy: correction passes per level above the coarsest (8 subpasses each)")
       ->capture_default_str()
-      ->check(CLI::Range(0, 8));
+      ->check(integerIn(0, 8));
   sub->add_option("--coarsest-passes", args->coarsestPasses,
                   "lazy: correction passes at the coarsest level (paper: 3-5, cheap on its small grid)")
       ->capture_default_str()
-      ->check(CLI::Range(0, 8));
+      ->check(integerIn(0, 8));
   sub->add_flag("--dual-grid,!--no-dual-grid", args->dualGrid,
                 "lazy: dual-grid correction (paper §5.3, on by default) on all levels but the coarsest: corrections "
                 "read only their own MxMxM cell's current state, so a request depends on far fewer voxels; "
                 "--no-dual-grid: the standard pass scheme");
-  sub->add_option("--grid-cell", args->gridCell, "lazy with --dual-grid: the cell side M in voxels, even (paper: 10-15)")
+  sub->add_option("--grid-cell", args->gridCell,
+                  "lazy with --dual-grid: the cell side M in voxels, even (paper: 10-15)")
       ->capture_default_str()
-      ->check(CLI::Range(4, 32));
-  sub->add_option("--sketch", args->sketch,
-                  "lazy with --mesh: design the rotation field from these sketch curves first (as `texsynth field`, "
-                  "docs/sketch-format.md); instead of --field")
+      ->check(integerIn(4, 32));
+  inputFiles(sub->add_option(
+                 "--sketch", args->sketch,
+                 "lazy with --mesh: design the rotation field from these sketch curves first (as `texsynth field`, "
+                 "docs/sketch-format.md); instead of --field"))
       ->excludes(field);
-  sub->add_option("--mask", args->masks,
-                  "lazy: feature mask image(s), bright on feature curves (e.g. brick joints): one for all planes or "
-                  "three (XY YZ ZX); matching adds the distance to the features as a channel")
+  inputFiles(sub->add_option(
+                 "--mask", args->masks,
+                 "lazy: feature mask image(s), bright on feature curves (e.g. brick joints): one for all planes or "
+                 "three (XY YZ ZX); matching adds the distance to the features as a channel"))
       ->expected(1, 3);
   sub->add_option("--cut", args->cut,
                   "With --render: add a view of the mesh cut open at AXIS=FRACTION of its box (the +AXIS side "
                   "removed), showing the solid inside");
-  return {sub, [args, &globals] { runSolid(*args, globals); }};
+  return {sub, [sub, args, &globals] { runSolid(*sub, *args, globals); }, solidParameterSources(*args),
+          "--resolution, --surface or --render-size"};
 }
 
 }  // namespace texsynth::cli

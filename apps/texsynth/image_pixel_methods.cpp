@@ -1,7 +1,6 @@
 // The pixel-based methods of `texsynth image`: they synthesize source coordinates into the
 // exemplar (written with --coords, re-applied to other maps with --apply-coords).
 #include <cmath>
-#include <map>
 #include <sstream>
 
 #include "image_args.h"
@@ -45,46 +44,16 @@ std::vector<int> parseNeighborhoods(const std::string& text) {
   return sizes;
 }
 
-// The command-line flag behind a library parameter name.
-std::string flagFor(const std::string& parameter) {
-  static const std::map<std::string, std::string> flags = {{"levelCount", "--levels"},
-                                                           {"levels", "--levels"},
-                                                           {"similarCount", "-k"},
-                                                           {"iterations", "--iterations"},
-                                                           {"neighborhood", "--neighborhood"},
-                                                           {"levelNeighborhoodSizes", "--neighborhood"},
-                                                           {"neighborhoodSize", "--neighborhood"},
-                                                           {"subpasses", "--subpasses"},
-                                                           {"passes", "--passes"},
-                                                           {"jitter", "--jitter"}};
-  auto found = flags.find(parameter);
-  return found == flags.end() ? parameter : found->second;
-}
-
-// Runs `work`, renaming the library's parameter names in errors to the flags users typed.
-template <class Work>
-auto withFlagNames(Work&& work) {
-  try {
-    return work();
-  } catch (const ParameterError& e) {
-    throw ParameterError(flagFor(e.parameter()), e.problem());
-  }
-}
-
 }  // namespace
 
 Image synthesizeParallelWindow(const Image& exemplar, const ImageArgs& args, const Window& window,
                                const GlobalOptions& globals, json& report) {
-  const std::int64_t limit = std::int64_t(1) << 28;
-  if (window.x < -limit || window.x > limit || window.y < -limit || window.y > limit)
-    throw ParameterError("--window", "parallel synthesis needs X and Y within +-2^28");
   auto progress = makeProgress(globals);
   AnalysisOptions analysisOptions;
   if (args.levels >= 0) analysisOptions.levelCount = args.levels;
   if (args.similarCount >= 0) analysisOptions.similarCount = args.similarCount;
   if (!args.neighborhoods.empty()) analysisOptions.levelNeighborhoodSizes = parseNeighborhoods(args.neighborhoods);
-  ExemplarAnalysis analysis = withFlagNames(
-      [&] { return analyzeExemplarCached(exemplar, analysisOptions, defaultCacheDirectory(), *progress); });
+  ExemplarAnalysis analysis = analyzeExemplarCached(exemplar, analysisOptions, defaultCacheDirectory(), *progress);
   ParallelSynthesisOptions options;
   options.seed = globals.seed;
   options.passes = args.passes;
@@ -94,10 +63,8 @@ Image synthesizeParallelWindow(const Image& exemplar, const ImageArgs& args, con
     options.jitter.assign(analysis.levelCount(), rest);
     options.jitter[0] = coarse;
   }
-  SourceCoordinates coords = withFlagNames([&] {
-    return synthesizeParallelCoordinates(analysis, options, int(window.x), int(window.y), window.width, window.height,
-                                         *progress);
-  });
+  SourceCoordinates coords = synthesizeParallelCoordinates(analysis, options, int(window.x), int(window.y),
+                                                           window.width, window.height, *progress);
   if (!args.coords.empty()) writeImage(args.coords, coordinateImage(coords));
   report["levels"] = analysis.levelCount();
   return lookupColors(exemplar, coords);
@@ -119,12 +86,9 @@ Image synthesizeOptimized(const Image& exemplar, const ImageArgs& args, int widt
                          "--solver discrete");
   auto progress = makeProgress(globals);
   std::vector<ExemplarAnalysis> analyses;
-  withFlagNames([&] {
-    for (const AnalysisOptions& analysisOptions : optimizationAnalysisOptions(options))
-      analyses.push_back(analyzeExemplarCached(exemplar, analysisOptions, defaultCacheDirectory(), *progress));
-  });
-  TextureOptimizationResult result =
-      withFlagNames([&] { return optimizeTexture(analyses, options, width, height, *progress); });
+  for (const AnalysisOptions& analysisOptions : optimizationAnalysisOptions(options))
+    analyses.push_back(analyzeExemplarCached(exemplar, analysisOptions, defaultCacheDirectory(), *progress));
+  TextureOptimizationResult result = optimizeTexture(analyses, options, width, height, *progress);
   if (!args.coords.empty()) writeImage(args.coords, coordinateImage(result.coords));
 
   json iterations = json::array();
@@ -144,6 +108,8 @@ Image synthesizeOptimized(const Image& exemplar, const ImageArgs& args, int widt
 }
 
 Image applyCoordinates(const Image& map, const ImageArgs& args, json& report) {
+  if (readImageInfo(args.applyCoords).format != "exr")  // only float EXR holds coordinates exactly
+    throw InputError(args.applyCoords, "is not an OpenEXR file; source coordinates come only from --coords as .exr");
   const Image coords = readImage(args.applyCoords);
   if (coords.channels < 2)
     throw InputError(args.applyCoords, "holds " + std::to_string(coords.channels) +

@@ -6,7 +6,9 @@
 
 #include "cli_common.h"
 #include "texsynth/core/error.h"
+#include "texsynth/core/output_batch.h"
 #include "texsynth/core/parallel.h"
+#include "texsynth/core/temporary_files.h"
 
 using namespace texsynth;
 
@@ -44,8 +46,14 @@ int main(int argc, char** argv) {
 
   try {
     ThreadLimit limit(globals.threads);
+    removeTemporariesOnSignals();
     for (auto& command : commands)
-      if (command.parser->parsed()) command.run();
+      if (command.parser->parsed()) {
+        cli::checkFileArguments(*command.parser);  // every destination, before any work
+        OutputBatch outputs;                       // all of the run's outputs, or none
+        cli::runCommand(command);                  // errors name the user's flags and files
+        outputs.commit();
+      }
     return 0;
   } catch (const ParameterError& e) {
     std::fprintf(stderr, "texsynth: bad parameter %s\n", e.what());

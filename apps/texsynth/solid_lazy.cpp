@@ -1,7 +1,6 @@
 // texsynth solid --method lazy: building the lazy synthesis (exemplars, field, regions) and
 // reporting its work.
 #include <chrono>
-#include <cmath>
 
 #include "solid_args.h"
 #include "texsynth/field/field_designer.h"
@@ -23,14 +22,9 @@ std::shared_ptr<LazySolid> makeSynthesis(const std::vector<std::string>& exempla
                                          const LazyOrientation& orientation) {
   if (exemplars.size() == 2)
     throw ParameterError("EXEMPLAR", "give one exemplar for all three planes, or three: XY YZ ZX");
-  try {
-    if (exemplars.size() == 1) return std::make_shared<LazySolid>(readImage(exemplars[0]), options, orientation);
-    return std::make_shared<LazySolid>(readImage(exemplars[0]), readImage(exemplars[1]), readImage(exemplars[2]),
-                                       options, orientation);
-  } catch (const ParameterError& e) {
-    if (e.parameter() == "featureMask") throw ParameterError("--mask", e.problem());
-    throw;
-  }
+  if (exemplars.size() == 1) return std::make_shared<LazySolid>(readImage(exemplars[0]), options, orientation);
+  return std::make_shared<LazySolid>(readImage(exemplars[0]), readImage(exemplars[1]), readImage(exemplars[2]), options,
+                                     orientation);
 }
 
 }  // namespace
@@ -81,9 +75,6 @@ LazyBuild makeLazySolid(const SolidArgs& args, const Mesh& mesh, const Box3f& bo
     return build;
   }
   if (mesh.positions.empty()) throw ParameterError("--inner", "needs --mesh: the regions are depths below its surface");
-  if (!std::isfinite(args.shell) || !(args.shell > 0 && args.shell < 1))
-    throw ParameterError("--shell",
-                         "must be a fraction in (0, 1) of the mesh's diagonal, got " + std::to_string(args.shell));
   LazySolidOptions innerOptions = options;
   innerOptions.seed = seed ^ 0x1a2b3c4d5e6fULL;  // independent of the shell's synthesis
   innerOptions.featureMasks.clear();             // --mask describes the shell's exemplars

@@ -9,44 +9,77 @@
 #include <fstream>
 
 #include "texsynth/core/error.h"
+#include "texsynth/core/output_batch.h"
+#include "texsynth/core/temporary_files.h"
 
 namespace texsynth {
 namespace fs = std::filesystem;
 
-void writeAtomically(const std::string& path, const std::function<void(const std::string&)>& write) {
-  fs::path target(path);
-  fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+void writeAtomically(const std::string& path, const std::function<void(const std::string&)>& write, Staging staging) {
+  checkWritableDestination(path);
+  const fs::path target(path);
+  removeStaleTemporaries(target.has_parent_path() ? target.parent_path().string() : ".");
+  const std::string temp = temporaryPathFor(path);
+  registerTemporary(temp);
+  const auto discard = [&temp] {
+    std::error_code ec;
+    fs::remove(temp, ec);
+    unregisterTemporary(temp);
+  };
+  try {
+    write(temp);
+  } catch (const Error&) {
+    discard();
+    throw;
+  } catch (const std::bad_alloc&) {
+    discard();
+    throw;
+  } catch (const std::exception& e) {  // a library's own exception (OpenEXR, stb): say which file
+    discard();
+    throw OutputError(path, std::string("cannot write: ") + e.what());
+  }
+  std::error_code ec;
+  if (!fs::exists(temp, ec)) {
+    unregisterTemporary(temp);
+    throw OutputError(path, "writer produced no file");
+  }
+  if (OutputBatch* batch = OutputBatch::active(); batch && staging == Staging::WithRun) {
+    batch->stage(temp, path);
+    return;
+  }
+  fs::rename(temp, target, ec);
+  if (ec) {
+    discard();
+    throw OutputError(path, "cannot move the finished file into place: " + ec.message());
+  }
+  unregisterTemporary(temp);
+}
+
+void checkWritableDestination(const std::string& path) {
+  const fs::path target(path);
+  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) throw OutputError(path, "directory '" + dir.string() + "' does not exist");
   if (fs::is_directory(target, ec)) throw OutputError(path, "is a directory");
-  // Keep the real extension last: some writers pick the format from it.
-  // Built piecewise: GCC 12 warns falsely (-Wrestrict) on a chain of operator+ starting at a literal.
-  std::string name = ".";
-  name.append(target.stem().string()).append(".tmp").append(std::to_string(::getpid()));
-  name.append(target.extension().string());
-  std::string temp = (dir / name).string();
-  try {
-    write(temp);
-  } catch (...) {
-    fs::remove(temp, ec);
-    throw;
-  }
-  if (!fs::exists(temp, ec)) throw OutputError(path, "writer produced no file");
-  fs::rename(temp, target, ec);
-  if (ec) {
-    fs::remove(temp, ec);
-    throw OutputError(path, "cannot move the finished file into place: " + ec.message());
-  }
+  if (::access(dir.c_str(), W_OK | X_OK) != 0)
+    throw OutputError(path, "cannot write in directory '" + dir.string() + "': " + std::strerror(errno));
+  if (fs::exists(target, ec) && !fs::is_regular_file(target, ec))
+    throw OutputError(path, "exists and is not a regular file");
 }
 
-void writeFileAtomically(const std::string& path, const std::string& bytes) {
-  writeAtomically(path, [&](const std::string& temp) {
-    std::ofstream out(temp, std::ios::binary);
-    if (!out) throw OutputError(path, std::string("cannot open for writing: ") + std::strerror(errno));
-    out.write(bytes.data(), std::streamsize(bytes.size()));
-    out.close();
-    if (!out) throw OutputError(path, "write failed (disk full?)");
-  });
+void writeFileAtomically(const std::string& path, const std::string& bytes, Staging staging) {
+  writeAtomically(
+      path,
+      [&](const std::string& temp) {
+        std::ofstream out(temp, std::ios::binary);
+        if (!out) throw OutputError(path, std::string("cannot open for writing: ") + std::strerror(errno));
+        out.write(bytes.data(), std::streamsize(bytes.size()));
+        out.flush();
+        if (!out) throw OutputError(path, std::string("write failed: ") + std::strerror(errno));
+        out.close();
+        if (!out) throw OutputError(path, std::string("write failed: ") + std::strerror(errno));
+      },
+      staging);
 }
 
 std::string readFileBytes(const std::string& path, std::size_t maxBytes) {

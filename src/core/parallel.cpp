@@ -42,4 +42,8 @@ int hardwareThreads() {
   return tbb::info::default_concurrency();
 }
 
+int threadLimit() {
+  return int(tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
+}
+
 }  // namespace texsynth

@@ -13,10 +13,10 @@ inline constexpr int kLaneWidth = 8;
 
 struct PatchBasis {
   int patchSize = 0;
-  int dimensions = 0;          // patchSize * patchSize * channels
-  int stride = 0;              // dimensions rounded up to kLaneWidth
-  std::vector<float> mean;     // dimensions
-  std::vector<float> rotation; // dimensions x stride, row-major; column j = j-th principal axis
+  int dimensions = 0;           // patchSize * patchSize * channels
+  int stride = 0;               // dimensions rounded up to kLaneWidth
+  std::vector<float> mean;      // dimensions
+  std::vector<float> rotation;  // dimensions x stride, row-major; column j = j-th principal axis
 };
 
 // PCA of the patches of `image` (a fixed, evenly strided subsample when there are many):

@@ -57,7 +57,7 @@ void writeCacheFile(const std::string& directory, const std::string& path, const
   std::error_code ec;
   std::filesystem::create_directories(directory, ec);
   if (ec) throw OutputError(directory, "cannot create the cache directory: " + ec.message());
-  writeFileAtomically(path, bytes);
+  writeFileAtomically(path, bytes, Staging::Immediately);  // a cache outlives a failed run
 }
 
 }  // namespace texsynth::detail

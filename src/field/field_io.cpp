@@ -4,6 +4,7 @@
 #include <cstring>
 #include <nlohmann/json.hpp>
 
+#include "json_input.h"
 #include "texsynth/core/atomic_file.h"
 #include "texsynth/core/error.h"
 
@@ -62,30 +63,30 @@ FieldFile decodeField(std::string_view bytes, const std::string& source) {
     throw InputError(source, "not a texsynth field file (missing TSFIELD1 signature)");
   std::uint32_t length = getU32(bytes, 8);
   if (length > kMaxHeader || 12 + std::size_t(length) > bytes.size()) throw InputError(source, "truncated header");
-  nlohmann::json header;
-  try {
-    header = nlohmann::json::parse(bytes.substr(12, length));
-  } catch (const nlohmann::json::parse_error&) {
-    throw InputError(source, "header is not valid JSON");
-  }
+  const nlohmann::json header = json_input::parse(bytes.substr(12, length), source, "header");
+  if (!header.is_object()) throw InputError(source, "header must be a JSON object");
+  auto entry = [&](const char* key) -> const nlohmann::json& {
+    if (!header.contains(key)) throw InputError(source, std::string("header has no \"") + key + "\"");
+    return header[key];
+  };
+  auto triple = [&](const char* key) -> const nlohmann::json& {
+    const nlohmann::json& value = entry(key);
+    if (!value.is_array() || value.size() != 3)
+      throw InputError(source, std::string("header \"") + key + "\": must be an array of 3 numbers");
+    return value;
+  };
+  if (entry("format") != "texsynth-field" || entry("version") != 1)
+    throw InputError(source, "unsupported field format or version");
   FieldGrid grid;
-  bool hasScale = false;
-  try {
-    if (header.at("format") != "texsynth-field" || header.at("version") != 1)
-      throw InputError(source, "unsupported field format or version");
-    for (int a = 0; a < 3; ++a) {
-      grid.nodes[a] = header.at("nodes").at(a).get<int>();
-      grid.origin[a] = header.at("origin").at(a).get<float>();
-    }
-    grid.spacing = header.at("spacing").get<float>();
-    hasScale = header.at("has_scale").get<bool>();
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(source, std::string("bad header: ") + e.what());
+  for (int a = 0; a < 3; ++a) {
+    const std::string index = std::to_string(a) + "]";
+    grid.nodes[a] = int(json_input::integerIn(triple("nodes")[a], 2, 4097, source, "header nodes[" + index));
+    grid.origin[a] = json_input::finiteFloat(triple("origin")[a], source, "header origin[" + index);
   }
-  if ((grid.nodes.array() < 2).any() || (grid.nodes.array() > 4097).any())
-    throw InputError(source, "node counts must be in [2, 4097]");
-  if (!(grid.spacing > 0) || !std::isfinite(grid.spacing) || !grid.origin.allFinite())
-    throw InputError(source, "spacing must be positive and the origin finite");
+  grid.spacing = json_input::finiteFloat(entry("spacing"), source, "header spacing");
+  if (!(grid.spacing > 0)) throw InputError(source, "header spacing: must be positive");
+  if (!entry("has_scale").is_boolean()) throw InputError(source, "header has_scale: must be true or false");
+  const bool hasScale = entry("has_scale").get<bool>();
   const std::size_t n = std::size_t(grid.nodeCount());
   const std::size_t expected = 12 + std::size_t(length) + n * 16 + (hasScale ? n * 4 : 0);
   if (bytes.size() < expected)

@@ -150,7 +150,8 @@ void gaussSeidel(const SparseOf<Scalar>& a, const Eigen::Matrix<Scalar, Eigen::D
 }  // namespace
 
 void validateHarmonicSolverOptions(const HarmonicSolverOptions& options) {
-  if (!(options.weight > 0) || !std::isfinite(options.weight)) throw ParameterError("weight", "must be positive");
+  if (!(options.weight >= kMinConstraintWeight && options.weight <= kMaxConstraintWeight))
+    throw ParameterError("weight", "must be in [1, 10000] (the paper uses 100), got " + std::to_string(options.weight));
   if (!(options.tolerance > 0 && options.tolerance <= 0.1)) throw ParameterError("tolerance", "must be in (0, 0.1]");
   if (options.maxIterations < 1) throw ParameterError("maxIterations", "must be at least 1");
 }

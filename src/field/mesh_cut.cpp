@@ -9,8 +9,7 @@
 
 namespace texsynth {
 
-MeshCut cutOpenMesh(const Mesh& mesh, int axis, float fraction, float capCell, const Vec3f& capColor,
-                    float capInset) {
+MeshCut cutOpenMesh(const Mesh& mesh, int axis, float fraction, float capCell, const Vec3f& capColor, float capInset) {
   if (axis < 0 || axis > 2) throw ParameterError("cutAxis", "must be 0, 1 or 2, got " + std::to_string(axis));
   if (!(fraction > 0 && fraction < 1)) throw ParameterError("cutPosition", "must be in (0, 1)");
   if (!(capCell > 0) || !std::isfinite(capCell)) throw ParameterError("capCell", "must be finite and > 0");

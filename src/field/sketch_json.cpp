@@ -1,9 +1,9 @@
 // The sketch file format (docs/sketch-format.md): strict JSON, unknown keys rejected so a
 // typo never silently drops a constraint.
-#include <cmath>
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "json_input.h"
 #include "texsynth/core/atomic_file.h"
 #include "texsynth/core/error.h"
 #include "texsynth/field/sketch.h"
@@ -30,11 +30,7 @@ struct Reader {
   Vec3f vec3(const json& value, const std::string& where) const {
     if (!value.is_array() || value.size() != 3) fail(where, "must be an array of 3 numbers");
     Vec3f v;
-    for (int a = 0; a < 3; ++a) {
-      if (!value[a].is_number()) fail(where, "must be an array of 3 numbers");
-      v[a] = value[a].get<float>();
-      if (!std::isfinite(v[a])) fail(where, "coordinates must be finite");
-    }
+    for (int a = 0; a < 3; ++a) v[a] = json_input::finiteFloat(value[a], source, where + "[" + std::to_string(a) + "]");
     return v;
   }
   int axis(const json& value, const std::string& where) const {
@@ -106,16 +102,10 @@ const char* axisName(int axis) {
 }
 
 Sketch parseSketch(std::string_view text, const std::string& source) {
-  json document;
-  try {
-    document = json::parse(text);
-  } catch (const json::parse_error& e) {
-    throw InputError(source, std::string("not valid JSON: ") + e.what());
-  }
+  const json document = json_input::parse(text, source);
   Reader reader{source};
   reader.onlyKeys(document, "sketch", {"version", "curves", "scale_points"});
-  if (document.contains("version") && !(document["version"].is_number_integer() && document["version"].get<int>() == 1))
-    reader.fail("version", "must be 1");
+  if (document.contains("version")) json_input::integerIn(document["version"], 1, 1, source, "version");
   if (!document.contains("curves") || !document["curves"].is_array() || document["curves"].empty())
     reader.fail("curves", "must be a non-empty array");
   Sketch sketch;
@@ -132,9 +122,8 @@ Sketch parseSketch(std::string_view text, const std::string& source) {
         reader.fail(where, "needs \"position\" and \"scale\"");
       ScalePoint p;
       p.position = reader.vec3(points[i]["position"], where + ".position");
-      if (!points[i]["scale"].is_number()) reader.fail(where + ".scale", "must be a number");
-      p.scale = points[i]["scale"].get<float>();
-      if (!(p.scale > 0) || !std::isfinite(p.scale)) reader.fail(where + ".scale", "must be positive");
+      p.scale = json_input::finiteFloat(points[i]["scale"], source, where + ".scale");
+      if (!(p.scale > 0)) reader.fail(where + ".scale", "must be positive");
       sketch.scalePoints.push_back(p);
     }
   }

@@ -52,7 +52,7 @@ void TileBlendTexture::sample(double x, double y, float* color) const {
 }
 
 Image TileBlendTexture::synthesizeWindow(std::int64_t x0, std::int64_t y0, int width, int height) const {
-  requireWindow(width, height);
+  requireWindow(x0, y0, width, height);
   Image out(width, height, gaussianized_.gaussian.channels);
   parallelForChunks(0, height, kRowChunk, [&](std::int64_t rowBegin, std::int64_t rowEnd) {
     for (std::int64_t y = rowBegin; y < rowEnd; ++y)

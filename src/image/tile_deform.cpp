@@ -20,7 +20,7 @@ void validate(const Image& exemplar, const TileDeformOptions& o) {
   requireFiniteAtLeast("cellHeight", o.cellHeight, 0.0f);
   requireFiniteAtLeast("lambdaX", o.lambdaX, 0.0f);
   requireFiniteAtLeast("lambdaY", o.lambdaY, 0.0f);
-  requireFiniteAtLeast("maxDisplacement", o.maxDisplacement, 0.0f);
+  requireDeformationClamp("maxDisplacement", o.maxDisplacement);
   requireFinitePositive("noiseFrequency", o.noiseFrequency);
 }
 
@@ -84,7 +84,7 @@ void TileDeformTexture::sample(double x, double y, float* color) const {
 }
 
 Image TileDeformTexture::synthesizeWindow(std::int64_t x0, std::int64_t y0, int width, int height) const {
-  requireWindow(width, height);
+  requireWindow(x0, y0, width, height);
   Image out(width, height, exemplar_.channels);
   // Per-column and per-row cell coordinates, and the corner displacements of every cell the
   // window touches: the same values sourcePosition computes, computed once.

@@ -1,20 +1,21 @@
-// OpenEXR through the Imf C++ API, reading from memory so that a short file is an ordinary
-// exception rather than a read past the end. Channels Y, YA, RGB or RGBA; any sample type
-// (half, float, uint) is converted to float by the library. Written as 32-bit float with
-// lossless ZIP compression so round trips are exact.
+// OpenEXR reader through the Imf C++ API, reading from memory so that a short file is an
+// ordinary exception rather than a read past the end. Channels Y, YA, RGB or RGBA; any sample
+// type (half, float, uint) is converted to float by the library. The writer is
+// image_exr_write.cpp.
 #include <OpenEXR/Iex.h>
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfIO.h>
 #include <OpenEXR/ImfInputFile.h>
-#include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfIntAttribute.h>
 
 #include <cstring>
 #include <mutex>
 #include <vector>
 
 #include "image_codecs.h"
+#include "image_exr_support.h"
 #include "texsynth/core/error.h"
 
 namespace texsynth::image_codec {
@@ -24,7 +25,8 @@ class MemoryInput : public Imf::IStream {
  public:
   MemoryInput(const std::string& name, std::string_view bytes) : Imf::IStream(name.c_str()), bytes_(bytes) {}
   bool read(char c[], int n) override {
-    if (n < 0 || position_ + std::uint64_t(n) > bytes_.size())
+    // Written so that no sum can wrap: a header may seek to any 64-bit offset.
+    if (n < 0 || position_ > bytes_.size() || std::uint64_t(n) > bytes_.size() - position_)
       throw Iex::InputExc("the file is truncated (it ends at byte " + std::to_string(bytes_.size()) + ")");
     std::memcpy(c, bytes_.data() + position_, std::size_t(n));
     position_ += std::uint64_t(n);
@@ -79,6 +81,7 @@ struct ExrLayout {
   int width = 0, height = 0;
   std::vector<std::string> channels;
   int bits = 32;
+  bool eightBitLevels = false;  // half floats standing for k/255 (kExrLevelsAttribute)
 };
 
 ExrLayout layoutOf(const std::string& path, const Imf::Header& header, std::uint64_t fileBytes) {
@@ -94,11 +97,22 @@ ExrLayout layoutOf(const std::string& path, const Imf::Header& header, std::uint
   for (const std::string& name : layout.channels)
     allHalf &= header.channels().findChannel(name.c_str())->type == Imf::HALF;
   layout.bits = allHalf ? 16 : 32;
+  auto* levels = header.findTypedAttribute<Imf::IntAttribute>(kExrLevelsAttribute);
+  layout.eightBitLevels = allHalf && levels && levels->value() == kEightBitLevels;
   // Generous for every OpenEXR compression (deflate-based ones stay near 1032:1, PIZ and B44
   // far below); only a file that lies about its size gets near it.
   checkPlausibleSize(path, fileBytes, layout.width, layout.height, int(layout.channels.size()), layout.bits / 8, 4096,
                      Format::Exr);
   return layout;
+}
+
+// Our writer's half floats back to the exact 8-bit levels they stand for.
+void snapToEightBitLevels(Image& image) {
+  std::size_t rowValues = std::size_t(image.width) * std::size_t(image.channels);
+  parallelFor(0, image.height, [&](std::int64_t y) {
+    for (std::size_t i = std::size_t(y) * rowValues, end = i + rowValues; i < end; ++i)
+      image.pixels[i] = fromByte(toByte(image.pixels[i]));
+  });
 }
 
 // Runs `body`, turning OpenEXR's exceptions into one InputError naming the file.
@@ -142,32 +156,11 @@ Image decodeExr(const std::string& path, std::string_view bytes) {
                    Imf::Slice::Make(Imf::FLOAT, origin + c * sizeof(float), layout.window, xStride, yStride));
     file.setFrameBuffer(frame);
     if (!file.isComplete()) throw InputError(path, "truncated: the OpenEXR file is missing pixel data");
+    matchExrThreadsToLimit();
     file.readPixels(layout.window.min.y, layout.window.max.y);
+    if (layout.eightBitLevels) snapToEightBitLevels(image);
     return image;
   });
-}
-
-void writeExr(const std::string& filePath, const std::string& path, const Image& image) {
-  static const std::vector<std::vector<const char*>> kNames = {
-      {"Y"}, {"Y", "A"}, {"R", "G", "B"}, {"R", "G", "B", "A"}};
-  const std::vector<const char*>& names = kNames[image.channels - 1];
-  try {
-    Imf::Header header(image.width, image.height);
-    header.compression() = Imf::ZIP_COMPRESSION;
-    for (const char* name : names) header.channels().insert(name, Imf::Channel(Imf::FLOAT));
-    std::size_t xStride = sizeof(float) * image.channels, yStride = xStride * image.width;
-    char* base = reinterpret_cast<char*>(const_cast<float*>(image.pixels.data()));  // only read by the writer
-    Imf::FrameBuffer frame;
-    for (int c = 0; c < image.channels; ++c)
-      frame.insert(names[c], Imf::Slice(Imf::FLOAT, base + c * sizeof(float), xStride, yStride));
-    Imf::OutputFile file(filePath.c_str(), header);
-    file.setFrameBuffer(frame);
-    file.writePixels(image.height);
-  } catch (const Error&) {
-    throw;
-  } catch (const std::exception& e) {
-    throw OutputError(path, std::string("cannot write OpenEXR: ") + e.what());
-  }
 }
 
 }  // namespace texsynth::image_codec

@@ -17,10 +17,6 @@ std::uint32_t bigEndian32(std::string_view b, std::size_t at) {
   return u(0) << 24 | u(1) << 16 | u(2) << 8 | u(3);
 }
 
-void appendBigEndian32(std::string& out, std::uint32_t v) {
-  for (int shift = 24; shift >= 0; shift -= 8) out.push_back(char(v >> shift));
-}
-
 struct PatternHeader {
   std::size_t headerSize = 0;
   int width = 0, height = 0, channels = 0;
@@ -54,14 +50,16 @@ ImageFileInfo infoGimpPattern(const std::string& path, std::string_view bytes) {
 
 Image decodeGimpPattern(const std::string& path, std::string_view bytes) {
   PatternHeader header = parseHeader(path, bytes);
-  Image image(header.width, header.height, header.channels);
-  std::size_t need = image.pixels.size(), have = bytes.size() - header.headerSize;
+  // The pixels are stored raw: a file too short for them is refused before the image is allocated.
+  std::size_t need = std::size_t(header.width) * header.height * header.channels;
+  std::size_t have = bytes.size() - header.headerSize;
   if (have < need)
     throw InputError(path, "truncated: header says " + std::to_string(header.width) + "x" +
                                std::to_string(header.height) + " " + describeChannels(header.channels) + " but only " +
                                std::to_string(have) + " bytes of pixel data (need " + std::to_string(need) + ")");
+  Image image(header.width, header.height, header.channels);
   const char* pixels = bytes.data() + header.headerSize;
-  for (std::size_t i = 0; i < need; ++i) image.pixels[i] = float(std::uint8_t(pixels[i])) * (1.0f / 255.0f);
+  for (std::size_t i = 0; i < need; ++i) image.pixels[i] = fromByte(std::uint8_t(pixels[i]));
   return image;
 }
 

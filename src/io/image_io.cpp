@@ -9,6 +9,7 @@
 #include "image_codecs.h"
 #include "texsynth/core/atomic_file.h"
 #include "texsynth/core/error.h"
+#include "texsynth/core/parallel.h"
 
 namespace texsynth {
 namespace image_codec {
@@ -86,6 +87,18 @@ std::string describeChannels(int channels) {
   return std::to_string(channels) + "-channel";
 }
 
+std::vector<std::uint8_t> quantizedBytes(const Image& image, int channels) {
+  Image converted = channels == image.channels ? Image() : image.withChannels(channels);
+  const Image& source = channels == image.channels ? image : converted;
+  std::vector<std::uint8_t> bytes(source.pixels.size());
+  std::size_t rowValues = std::size_t(source.width) * std::size_t(channels);
+  parallelFor(0, source.height, [&](std::int64_t y) {
+    for (std::size_t i = std::size_t(y) * rowValues, end = i + rowValues; i < end; ++i)
+      bytes[i] = toByte(source.pixels[i]);
+  });
+  return bytes;
+}
+
 }  // namespace image_codec
 
 namespace {
@@ -161,6 +174,13 @@ ImageFileInfo readImageInfo(const std::string& path) {
   }
 }
 
+ImageWriteOptions writeOptionsKeeping(const ImageFileInfo& input) {
+  ImageWriteOptions options;
+  options.bitsPerChannel = input.bitsPerChannel > 8 ? 16 : 8;
+  options.exrHalf = input.bitsPerChannel <= 8;
+  return options;
+}
+
 void writeImage(const std::string& path, const Image& image, const ImageWriteOptions& options) {
   auto format = formatFromExtension(fileExtension(path));
   if (!format)
@@ -183,19 +203,22 @@ void writeImage(const std::string& path, const Image& image, const ImageWriteOpt
 
   switch (*format) {
     case Format::Exr:
-      writeAtomically(path, [&](const std::string& temp) { image_codec::writeExr(temp, path, image); });
+      writeAtomically(path,
+                      [&](const std::string& temp) { image_codec::writeExr(temp, path, image, options.exrHalf); });
       return;
     case Format::Pat:
       writeFileAtomically(path, image_codec::encodeGimpPattern(image, std::filesystem::path(path).stem().string()));
       return;
     case Format::Png:
-      if (options.bitsPerChannel == 16) {
-        writeFileAtomically(path, image_codec::encodePng16(image));
-        return;
-      }
-      [[fallthrough]];
-    default:
-      writeFileAtomically(path, image_codec::encodeStb(path, image, *format, options.jpegQuality));
+      writeFileAtomically(path, image_codec::encodePng(image, options.bitsPerChannel));
+      return;
+    case Format::Jpeg:
+      writeFileAtomically(path, image_codec::encodeJpeg(path, image, options.jpegQuality));
+      return;
+    case Format::Bmp:
+    case Format::Tga:
+      writeFileAtomically(path, image_codec::encodeStb(path, image, *format));
+      return;
   }
 }
 

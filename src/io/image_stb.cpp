@@ -1,10 +1,13 @@
-// PNG, JPEG, BMP and TGA through stb_image / stb_image_write (implementations live in
-// Debian's libstb). stb is lenient with truncated files (it pads with zeros), so before
-// decoding we check that the file's structure is complete; see image_stb_checks.cpp.
+// PNG, JPEG, BMP and TGA decoding through stb_image; BMP and TGA encoding through
+// stb_image_write (implementations live in Debian's libstb). PNG and JPEG have faster encoders
+// of their own: image_png.cpp and image_jpeg.cpp. stb is lenient with truncated files (it pads
+// with zeros), so before decoding we check that the file's structure is complete; see
+// image_stb_checks.cpp.
 #include <stb_image.h>
 #include <stb_image_write.h>
 
 #include <climits>
+#include <cstdlib>
 #include <memory>
 
 #include "image_codecs.h"
@@ -39,14 +42,8 @@ void appendBytes(void* context, void* bytes, int size) {
 
 // The channel count each 8-bit writer stores for `channels` given channels.
 int storedChannels(Format format, int channels) {
-  switch (format) {
-    case Format::Jpeg:
-      return 3;  // stb's encoder always writes YCbCr; JPEG has no alpha
-    case Format::Bmp:
-      return channels == 2 || channels == 4 ? 4 : 3;
-    default:
-      return channels;
-  }
+  if (format == Format::Bmp) return channels == 2 || channels == 4 ? 4 : 3;
+  return channels;
 }
 
 }  // namespace
@@ -57,6 +54,8 @@ ImageFileInfo infoStb(const std::string& path, std::string_view bytes, Format fo
   int width = 0, height = 0, channels = 0;
   if (!stbi_info_from_memory(data(bytes), length, &width, &height, &channels))
     throw InputError(path, decodeFailure(format));
+  // stb's BMP info reports a top-down file's height as stored, negative; its loader flips it.
+  if (format == Format::Bmp) height = std::abs(height);
   checkImageSize(path, width, height, channels);
   bool sixteen = stbi_is_16_bit_from_memory(data(bytes), length);
   // A baseline JPEG spends at least a bit or two per 8x8 block. PNG is checked by
@@ -81,29 +80,20 @@ Image decodeStb(const std::string& path, std::string_view bytes, Format format) 
     std::unique_ptr<stbi_uc, StbFree> pixels(stbi_load_from_memory(data(bytes), length, &width, &height, &channels, 0));
     if (!pixels) throw InputError(path, decodeFailure(format));
     image = Image(width, height, channels);
-    for (std::size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = float(pixels.get()[i]) * (1.0f / 255.0f);
+    for (std::size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = fromByte(pixels.get()[i]);
   }
   if (width != info.width || height != info.height || channels != info.channels)
     throw InputError(path, "decoded size differs from the header's");
   return image;
 }
 
-std::string encodeStb(const std::string& path, const Image& image, Format format, int jpegQuality) {
+std::string encodeStb(const std::string& path, const Image& image, Format format) {
   int channels = storedChannels(format, image.channels);
-  Image converted = channels == image.channels ? Image() : image.withChannels(channels);
-  const Image& source = channels == image.channels ? image : converted;
-  std::vector<std::uint8_t> quantized(source.pixels.size());
-  for (std::size_t i = 0; i < quantized.size(); ++i) quantized[i] = toByte(source.pixels[i]);
+  std::vector<std::uint8_t> quantized = quantizedBytes(image, channels);
 
   std::string bytes;
   int w = image.width, h = image.height, ok = 0;
   switch (format) {
-    case Format::Png:
-      ok = stbi_write_png_to_func(appendBytes, &bytes, w, h, channels, quantized.data(), w * channels);
-      break;
-    case Format::Jpeg:
-      ok = stbi_write_jpg_to_func(appendBytes, &bytes, w, h, channels, quantized.data(), jpegQuality);
-      break;
     case Format::Bmp:
       ok = stbi_write_bmp_to_func(appendBytes, &bytes, w, h, channels, quantized.data());
       break;

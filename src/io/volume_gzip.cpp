@@ -31,8 +31,12 @@ std::string inflateExactly(const std::string& path, std::string_view compressed,
     int result = inflate(&stream, Z_NO_FLUSH);
     consumed += inBefore - stream.avail_in;
     if (!full) produced += outBefore - stream.avail_out;
-    if (result == Z_STREAM_END) break;
-    if (full && stream.avail_out == 0) break;                      // more samples than the header says: ignored
+    if (result == Z_STREAM_END) {
+      if (consumed < compressed.size())
+        fail(std::to_string(compressed.size() - consumed) + " bytes follow the end of the gzip data");
+      break;
+    }
+    if (full && stream.avail_out == 0) fail("gzip data holds more samples than the header says");
     if (result == Z_BUF_ERROR && consumed == compressed.size()) {  // input exhausted
       if (!full) break;                                            // reported below with the byte counts
       fail("truncated: gzip data ends before its end marker and checksum");

@@ -3,14 +3,13 @@
 // first. Only attached data is supported; every problem is one InputError naming the file.
 #include <algorithm>
 #include <bit>
-#include <charconv>
 #include <cstring>
 #include <map>
-#include <sstream>
 #include <vector>
 
 #include "texsynth/core/error.h"
 #include "volume_codecs.h"
+#include "volume_nrrd_header.h"
 
 namespace texsynth::volume_codec {
 namespace {
@@ -45,72 +44,13 @@ const std::map<std::string, SampleTypeInfo>& sampleTypes() {
   return types;
 }
 
-struct NrrdHeader {
-  std::map<std::string, std::string> fields;
-  std::size_t dataOffset = 0;
-};
-
-std::string trim(std::string_view s) {
-  auto first = s.find_first_not_of(" \t"), last = s.find_last_not_of(" \t\r");
-  return first == std::string_view::npos ? std::string() : std::string(s.substr(first, last - first + 1));
-}
-
-NrrdHeader parseHeader(const std::string& path, std::string_view bytes) {
-  if (bytes.size() < 8 || bytes.substr(0, 7) != "NRRD000")
-    throw InputError(path, "not a NRRD file (it does not start with 'NRRD000x')");
-  NrrdHeader header;
-  std::size_t at = 0;
-  for (int lineNumber = 1;; ++lineNumber) {
-    std::size_t end = bytes.find('\n', at);
-    if (end == std::string_view::npos)
-      throw InputError(path, "truncated: the NRRD header never ends (no blank line before the data)");
-    std::string_view line = bytes.substr(at, end - at);
-    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    at = end + 1;
-    if (lineNumber == 1 || (!line.empty() && line[0] == '#')) continue;
-    if (line.empty()) break;
-    std::size_t colon = line.find(':');
-    if (colon == std::string_view::npos)
-      throw InputError(path, "malformed NRRD header line " + std::to_string(lineNumber) + ": '" +
-                                 std::string(line.substr(0, 80)) + "'");
-    if (colon + 1 < line.size() && line[colon + 1] == '=') continue;  // "key:=value" user data
-    std::string field = trim(line.substr(0, colon));
-    std::transform(field.begin(), field.end(), field.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    header.fields[field] = trim(line.substr(colon + 1));
-  }
-  header.dataOffset = at;
-  return header;
-}
-
-const std::string& required(const std::string& path, const NrrdHeader& header, const std::string& field) {
-  auto it = header.fields.find(field);
-  if (it == header.fields.end()) throw InputError(path, "NRRD header has no '" + field + "' field");
-  return it->second;
-}
-
-std::vector<std::string> words(const std::string& value) {
-  std::istringstream in(value);
-  std::vector<std::string> out;
-  for (std::string word; in >> word;) out.push_back(word);
-  return out;
-}
-
-std::int64_t parseInteger(const std::string& path, const std::string& field, const std::string& text) {
-  std::int64_t value = 0;
-  auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (error != std::errc() || end != text.data() + text.size())
-    throw InputError(path, "NRRD field '" + field + "' has a bad number '" + text + "'");
-  return value;
-}
-
 void rejectUnsupportedFields(const std::string& path, const NrrdHeader& header) {
-  for (const char* name : {"data file", "datafile"})
-    if (header.fields.count(name))
-      throw InputError(path, "detached NRRD data ('data file: " + header.fields.at(name) +
-                                 "') is not supported; store the samples in the .nrrd file itself");
-  for (const char* name : {"line skip", "lineskip", "byte skip", "byteskip"})
-    if (header.fields.count(name) && parseInteger(path, name, header.fields.at(name)) != 0)
-      throw InputError(path, std::string("NRRD '") + name + "' is not supported");
+  if (header.has("datafile"))
+    throw InputError(path, "detached NRRD data ('data file: " + header.fields.at("datafile").value +
+                               "') is not supported; store the samples in the .nrrd file itself");
+  for (auto [name, spelled] : {std::pair{"lineskip", "line skip"}, std::pair{"byteskip", "byte skip"}})
+    if (header.has(name) && parseNrrdInteger(path, spelled, header.fields.at(name).value) != 0)
+      throw InputError(path, std::string("NRRD '") + spelled + "' is not supported");
 }
 
 template <typename T>
@@ -149,21 +89,21 @@ void convert(const SampleTypeInfo& info, const char* src, std::size_t count, boo
 }  // namespace
 
 Volume decodeNrrd(const std::string& path, std::string_view bytes) {
-  NrrdHeader header = parseHeader(path, bytes);
+  NrrdHeader header = parseNrrdHeader(path, bytes);
   rejectUnsupportedFields(path, header);
 
-  const std::string& typeName = required(path, header, "type");
+  const std::string& typeName = header.required(path, "type");
   auto type = sampleTypes().find(typeName);
   if (type == sampleTypes().end())
     throw InputError(path, "unsupported NRRD sample type '" + typeName +
                                "' (uint8, uint16, float, int8, int16, int32, uint32, double)");
   const SampleTypeInfo& sample = type->second;
 
-  std::int64_t dimension = parseInteger(path, "dimension", required(path, header, "dimension"));
+  std::int64_t dimension = parseNrrdInteger(path, "dimension", header.required(path, "dimension"));
   if (dimension != 3 && dimension != 4)
     throw InputError(path,
                      "NRRD dimension " + std::to_string(dimension) + " is not a volume (need 3: X Y Z, or 4: C X Y Z)");
-  std::vector<std::string> sizeWords = words(required(path, header, "sizes"));
+  std::vector<std::string> sizeWords = nrrdWords(header.required(path, "sizes"));
   if (std::int64_t(sizeWords.size()) != dimension)
     throw InputError(path, "NRRD 'sizes' lists " + std::to_string(sizeWords.size()) + " sizes for dimension " +
                                std::to_string(dimension));
@@ -171,7 +111,7 @@ Volume decodeNrrd(const std::string& path, std::string_view bytes) {
   std::int64_t values = 1;
   std::string sizeText;
   for (const std::string& word : sizeWords) {
-    std::int64_t size = parseInteger(path, "sizes", word);
+    std::int64_t size = parseNrrdInteger(path, "sizes", word);
     sizeText += (sizeText.empty() ? "" : "x") + word;
     if (size < 1 || size > 65536)
       throw InputError(path, "NRRD size " + word + " is absurd (each axis must be 1..65536)");
@@ -180,15 +120,12 @@ Volume decodeNrrd(const std::string& path, std::string_view bytes) {
     if (values > (std::int64_t(1) << 31))
       throw InputError(path, "NRRD sizes " + std::string(sizeText) + "... are absurd (more than 2^31 values)");
   }
-  if (dimension == 4) {
-    auto kinds = header.fields.count("kinds") ? words(header.fields.at("kinds")) : std::vector<std::string>{};
-    if (!kinds.empty() && (kinds[0] == "domain" || kinds[0] == "space" || kinds[0] == "time"))
-      throw InputError(
-          path, "4D NRRD must have its channel axis first (sizes C X Y Z), but 'kinds' says the first axis is '" +
-                    kinds[0] + "'");
-  }
+  checkNrrdAxisFields(path, header, sizes);
+  if (header.has("number") && parseNrrdInteger(path, "number", header.fields.at("number").value) != values)
+    throw InputError(path, "NRRD 'number: " + header.fields.at("number").value + "' disagrees with sizes " + sizeText +
+                               " (" + std::to_string(values) + " samples)");
 
-  std::string encoding = required(path, header, "encoding");
+  std::string encoding = header.required(path, "encoding");
   bool gzip = encoding == "gzip" || encoding == "gz";
   if (!gzip && encoding != "raw") throw InputError(path, "unsupported NRRD encoding '" + encoding + "' (raw, gzip)");
   bool swapBytes = false;
@@ -196,9 +133,9 @@ Volume decodeNrrd(const std::string& path, std::string_view bytes) {
     auto endian = header.fields.find("endian");
     if (endian == header.fields.end())
       throw InputError(path, "NRRD header has no 'endian' field for " + typeName + " samples");
-    if (endian->second != "little" && endian->second != "big")
-      throw InputError(path, "unknown NRRD endian '" + endian->second + "'");
-    swapBytes = (endian->second == "big") != (std::endian::native == std::endian::big);
+    if (endian->second.value != "little" && endian->second.value != "big")
+      throw InputError(path, "unknown NRRD endian '" + endian->second.value + "'");
+    swapBytes = (endian->second.value == "big") != (std::endian::native == std::endian::big);
   }
 
   std::uint64_t needBytes = std::uint64_t(values) * sample.bytes;
@@ -215,6 +152,9 @@ Volume decodeNrrd(const std::string& path, std::string_view bytes) {
   } else if (data.size() < needBytes) {
     throw InputError(path, "truncated: " + what + " but only " + std::to_string(data.size()) + " bytes of data (need " +
                                std::to_string(needBytes) + ")");
+  } else if (data.size() > needBytes) {
+    throw InputError(path, what + " (" + std::to_string(needBytes) + " bytes) but " +
+                               std::to_string(data.size() - needBytes) + " more bytes follow them");
   }
 
   int channels = dimension == 4 ? int(sizes[0]) : 1;

@@ -56,7 +56,7 @@ void writeNrrd(const std::string& filePath, const std::string& path, const Volum
   if (!out) throw OutputError(path, std::string("cannot open for writing: ") + std::strerror(errno));
   auto sink = [&](const char* data, std::size_t size) {
     out.write(data, std::streamsize(size));
-    if (!out) throw OutputError(path, "write failed (disk full?)");
+    if (!out) throw OutputError(path, std::string("write failed: ") + std::strerror(errno));
   };
   std::string header = nrrdHeader(volume, options);
   sink(header.data(), header.size());
@@ -76,7 +76,7 @@ void writeNrrd(const std::string& filePath, const std::string& path, const Volum
   }
   if (gzip) gzip->finish();
   out.close();
-  if (!out) throw OutputError(path, "write failed (disk full?)");
+  if (!out) throw OutputError(path, std::string("write failed: ") + std::strerror(errno));
 }
 
 }  // namespace texsynth::volume_codec

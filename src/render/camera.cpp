@@ -8,7 +8,9 @@ namespace texsynth::render_detail {
 
 namespace {
 
-float radians(float degrees) { return degrees * std::numbers::pi_v<float> / 180.0f; }
+float radians(float degrees) {
+  return degrees * std::numbers::pi_v<float> / 180.0f;
+}
 
 struct BoundingSphere {
   Vec3f center;

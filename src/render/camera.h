@@ -9,7 +9,7 @@ namespace texsynth::render_detail {
 struct Camera {
   Mat3f worldToView;  // rows: camera right, up, back (the camera looks along -back)
   Vec3f eye;
-  float focal = 1;             // in samples
+  float focal = 1;                 // in samples
   float centerX = 0, centerY = 0;  // image centre, in samples
 
   // Screen position (x right, y down, in samples) and the inverse of the view depth.

@@ -43,7 +43,8 @@ Mesh makeUvSphereMesh(const Vec3f& center, float radius, int rings, int segments
   if (!center.allFinite()) throw ParameterError("center", "must be finite");
   if (!(radius > 0 && std::isfinite(radius))) throw ParameterError("radius", "must be finite and > 0");
   if (rings < 2 || rings > 4096) throw ParameterError("rings", "must be in [2, 4096], got " + std::to_string(rings));
-  if (segments < 3 || segments > 4096) throw ParameterError("segments", "must be in [3, 4096], got " + std::to_string(segments));
+  if (segments < 3 || segments > 4096)
+    throw ParameterError("segments", "must be in [3, 4096], got " + std::to_string(segments));
   Mesh mesh;
   const float pi = std::numbers::pi_v<float>;
   // (segments + 1) columns: the seam is duplicated so each vertex keeps one longitude.

@@ -13,7 +13,9 @@ namespace {
 constexpr int kTileSize = 32;
 
 // Fixed-point coordinate of the centre of sample i.
-constexpr std::int64_t sampleCenter(int i) { return std::int64_t(i) * kSubsampleOne + kSubsampleOne / 2; }
+constexpr std::int64_t sampleCenter(int i) {
+  return std::int64_t(i) * kSubsampleOne + kSubsampleOne / 2;
+}
 
 // Twice the signed area of (a, b, p); positive when p lies to the right of a->b with y down.
 // Exact in 64-bit integers, so E(a,b,p) == -E(b,a,p) and shared edges are watertight.
@@ -21,7 +23,9 @@ std::int64_t edge(const ScreenVertex& a, const ScreenVertex& b, std::int64_t px,
   return (b.x - a.x) * (py - a.y) - (b.y - a.y) * (px - a.x);
 }
 
-std::int64_t floorDiv(std::int64_t a, std::int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
+std::int64_t floorDiv(std::int64_t a, std::int64_t b) {
+  return a >= 0 ? a / b : -((-a + b - 1) / b);
+}
 
 // The sample rectangle (inclusive) whose centres lie in a triangle's bounding box, clipped
 // to the image; empty for zero-area triangles.
@@ -44,7 +48,7 @@ SampleBox sampleBox(const ScreenVertex& a, const ScreenVertex& b, const ScreenVe
 
 struct TileGrid {
   int columns, rows;
-  std::vector<std::int64_t> offsets;     // per tile, into triangleIds; size tiles + 1
+  std::vector<std::int64_t> offsets;      // per tile, into triangleIds; size tiles + 1
   std::vector<std::int32_t> triangleIds;  // per tile, ascending triangle index
 };
 
@@ -66,7 +70,8 @@ TileGrid binTriangles(const std::vector<SampleBox>& boxes, int width, int height
   grid.offsets = counts;
   grid.triangleIds.resize(std::size_t(counts[tiles]));
   for (std::size_t i = 0; i < boxes.size(); ++i)
-    if (!boxes[i].empty()) forEachTile(boxes[i], [&](std::size_t tile) { grid.triangleIds[counts[tile]++] = std::int32_t(i); });
+    if (!boxes[i].empty())
+      forEachTile(boxes[i], [&](std::size_t tile) { grid.triangleIds[counts[tile]++] = std::int32_t(i); });
   return grid;
 }
 
@@ -91,7 +96,8 @@ void drawTriangle(const ScreenVertex& a, const ScreenVertex& b, const ScreenVert
       // Inclusive test: a sample exactly on a shared edge is claimed by both sides and
       // the depth test (then the index) decides, so there are never cracks.
       if ((w0 | w1 | w2) >= 0) {
-        float inverseDepth = (float(w0) * a.inverseDepth + float(w1) * b.inverseDepth + float(w2) * c.inverseDepth) * inverseArea;
+        float inverseDepth =
+            (float(w0) * a.inverseDepth + float(w1) * b.inverseDepth + float(w2) * c.inverseDepth) * inverseArea;
         // Strictly nearer only: triangles arrive in ascending index, so ties keep the smaller.
         if (inverseDepth > depthRow[x]) {
           depthRow[x] = inverseDepth;
@@ -111,7 +117,9 @@ ScreenVertex snapToGrid(const Vec3f& projected) {
   // functions (products of coordinate differences) below 2^62 should a caller ever
   // project something far outside.
   constexpr double kLimit = double(std::int64_t(1) << 29);
-  auto snap = [&](float v) { return std::int64_t(std::llround(std::clamp(double(v) * double(kSubsampleOne), -kLimit, kLimit))); };
+  auto snap = [&](float v) {
+    return std::int64_t(std::llround(std::clamp(double(v) * double(kSubsampleOne), -kLimit, kLimit)));
+  };
   return {snap(projected.x()), snap(projected.y()), projected.z()};
 }
 

@@ -70,7 +70,8 @@ Scene prepareScene(const Mesh& mesh, const RenderOptions& options) {
   scene.lightWorld = scene.camera.viewToWorldDirection(options.lightDirection.normalized());
   scene.screen.resize(mesh.positions.size());
   parallelForChunks(0, std::int64_t(mesh.positions.size()), kChunk, [&](std::int64_t begin, std::int64_t end) {
-    for (std::int64_t i = begin; i < end; ++i) scene.screen[i] = render_detail::snapToGrid(scene.camera.project(mesh.positions[i]));
+    for (std::int64_t i = begin; i < end; ++i)
+      scene.screen[i] = render_detail::snapToGrid(scene.camera.project(mesh.positions[i]));
   });
   scene.visibility = render_detail::rasterize(scene.screen, mesh.triangles, sampleWidth, sampleHeight);
   gatherVisibleSamples(scene);
@@ -93,7 +94,8 @@ SurfaceSample surfaceAt(const Scene& scene, std::int64_t sample) {
   const ScreenVertex &a = scene.screen[t[0]], &b = scene.screen[t[1]], &c = scene.screen[t[2]];
   Vec3f screenWeights = render_detail::screenBarycentrics(a, b, c, x, y);
   // Perspective correction: attributes are affine in screen space only after dividing by depth.
-  Vec3f weighted(screenWeights[0] * a.inverseDepth, screenWeights[1] * b.inverseDepth, screenWeights[2] * c.inverseDepth);
+  Vec3f weighted(screenWeights[0] * a.inverseDepth, screenWeights[1] * b.inverseDepth,
+                 screenWeights[2] * c.inverseDepth);
   s.weights = weighted / weighted.sum();
   const auto& p = scene.mesh.positions;
   s.point = s.weights[0] * p[t[0]] + s.weights[1] * p[t[1]] + s.weights[2] * p[t[2]];
@@ -170,15 +172,21 @@ Image renderMesh(const Mesh& mesh, const SurfaceColorFunction& colorAt, const Re
   });
   colorAt(points, normals, colors);
   if (colors.size() != count)
-    throw ParameterError("colorAt", "returned " + std::to_string(colors.size()) + " colours for " + std::to_string(count) + " points");
+    throw ParameterError(
+        "colorAt", "returned " + std::to_string(colors.size()) + " colours for " + std::to_string(count) + " points");
   parallelForChunks(0, std::int64_t(count), kChunk, [&](std::int64_t begin, std::int64_t end) {
     for (std::int64_t k = begin; k < end; ++k) colors[k] = shade(scene, colors[k], normals[k]);
   });
   return resolve(scene, colors);
 }
 
-Image renderViews(const Mesh& mesh, const SurfaceColorFunction* colorAt, const std::vector<std::pair<float, float>>& yawPitch,
-                  const RenderOptions& options) {
+double renderMemoryBytes(const RenderOptions& options, int views) {
+  const double samples = double(options.width) * options.supersample * double(options.height) * options.supersample;
+  return double(std::max(views, 1)) * (16.0 * samples + 2 * 12.0 * double(options.width) * options.height);
+}
+
+Image renderViews(const Mesh& mesh, const SurfaceColorFunction* colorAt,
+                  const std::vector<std::pair<float, float>>& yawPitch, const RenderOptions& options) {
   if (yawPitch.empty()) throw ParameterError("yawPitch", "needs at least one view");
   validateRenderOptions(options);
   if (std::int64_t(options.width) * std::int64_t(yawPitch.size()) > 65536)

@@ -15,7 +15,8 @@ void requireFinite(const char* name, float value) {
 
 void requireRange(const char* name, int value, int low, int high) {
   if (value < low || value > high)
-    throw ParameterError(name, "must be in [" + std::to_string(low) + ", " + std::to_string(high) + "], got " + std::to_string(value));
+    throw ParameterError(
+        name, "must be in [" + std::to_string(low) + ", " + std::to_string(high) + "], got " + std::to_string(value));
 }
 
 }  // namespace

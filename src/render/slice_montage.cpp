@@ -20,11 +20,14 @@ void validate(const Volume& volume, const MontageOptions& options) {
     if (!(f >= 0 && f <= 1)) throw ParameterError("fractions", "must lie in [0, 1], got " + std::to_string(f));
   if (options.border < 0 || options.border > 1024)
     throw ParameterError("border", "must be in [0, 1024], got " + std::to_string(options.border));
-  if (options.scale < 1 || options.scale > 64) throw ParameterError("scale", "must be in [1, 64], got " + std::to_string(options.scale));
+  if (options.scale < 1 || options.scale > 64)
+    throw ParameterError("scale", "must be in [1, 64], got " + std::to_string(options.scale));
   if (!options.background.allFinite()) throw ParameterError("background", "must be a finite colour");
 }
 
-int sliceIndex(float fraction, int count) { return std::min(count - 1, int(std::floor(fraction * float(count)))); }
+int sliceIndex(float fraction, int count) {
+  return std::min(count - 1, int(std::floor(fraction * float(count))));
+}
 
 }  // namespace
 

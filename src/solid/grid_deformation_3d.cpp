@@ -6,6 +6,7 @@
 #include "texsynth/core/error.h"
 #include "texsynth/core/gradient_noise.h"
 #include "texsynth/core/random.h"
+#include "texsynth/image/window_support.h"
 
 namespace texsynth {
 
@@ -14,8 +15,7 @@ void validateGridDeformation(const GridDeformationOptions& options) {
     throw ParameterError("deformation.cellSize", "each component must be finite and > 0");
   if (!options.lambda.allFinite() || !(options.lambda.minCoeff() >= 0.0f))
     throw ParameterError("deformation.lambda", "each component must be finite and >= 0");
-  if (!(options.clamp >= 0.0f && options.clamp < 0.5f))
-    throw ParameterError("deformation.clamp", "must be in [0, 0.5)");
+  requireDeformationClamp("deformation.clamp", options.clamp);
   if (!std::isfinite(options.noiseScale) || !(options.noiseScale > 0.0f))
     throw ParameterError("deformation.noiseScale", "must be finite and > 0");
 }
@@ -26,7 +26,8 @@ GridDeformation3d::GridDeformation3d(const GridDeformationOptions& options) : op
   for (int component = 0; component < 3; ++component) {
     componentSeed_[component] = hashKey(options.seed, std::uint64_t(component), 0, 1);
     for (int a = 0; a < 3; ++a)
-      componentOffset_[component][a] = 64.0f * uniform01(hashKey(options.seed, std::uint64_t(component), std::uint64_t(a), 2));
+      componentOffset_[component][a] =
+          64.0f * uniform01(hashKey(options.seed, std::uint64_t(component), std::uint64_t(a), 2));
   }
 }
 

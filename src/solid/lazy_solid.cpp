@@ -217,10 +217,13 @@ void LazySolid::prepareCoarsestLevel(const Vec3i& min, const Vec3i& size, Progre
   synthesizeBlocks(std::move(blocks), 0, progress);
 }
 
-bool LazySolid::gridded(int level) const { return options_.dualGrid && level > 0 && options_.passes > 0; }
+bool LazySolid::gridded(int level) const {
+  return options_.dualGrid && level > 0 && options_.passes > 0;
+}
 
 LazyDependencyPlan LazySolid::planForLevel(int level, const std::vector<BlockKey>& deliver) const {
-  if (gridded(level)) return planGridLevel(deliver, options_.gridCellSize, context(level).readRadius(), options_.passes >= 2);
+  if (gridded(level))
+    return planGridLevel(deliver, options_.gridCellSize, context(level).readRadius(), options_.passes >= 2);
   std::vector<int> classes;
   for (const CorrectionStep& step : levelSchedule(options_, level, false).steps) classes.push_back(step.voxelClass);
   return planLevel(deliver, classes, context(level).readRadius());

@@ -15,7 +15,9 @@ float gridCoordinate(const Box3f& box, int axis, float fraction) {
   return box.min[axis] + fraction * box.size()[axis];
 }
 
-float voxelFraction(int index, int count) { return (float(index) + 0.5f) / float(count); }
+float voxelFraction(int index, int count) {
+  return (float(index) + 0.5f) / float(count);
+}
 
 // The two in-plane axes of a slice normal to `axis`, in image (u, v) order.
 std::pair<int, int> sliceAxes(int axis) {

@@ -36,8 +36,7 @@ void SolidTexture::evaluate(std::span<const Vec3f> points, std::span<const Vec3f
   if (!normals.empty() && normals.size() != n)
     throw ParameterError("normals", "must be empty or one per point (" + std::to_string(normals.size()) + " for " +
                                         std::to_string(n) + " points)");
-  if (values.size() != n * c)
-    throw ParameterError("values", "must hold channels() values per point");
+  if (values.size() != n * c) throw ParameterError("values", "must hold channels() values per point");
   parallelForChunks(0, std::int64_t(n), kPointsPerChunk, [&](std::int64_t begin, std::int64_t end) {
     const std::size_t b = std::size_t(begin), count = std::size_t(end - begin);
     evaluateSerial(points.subspan(b, count), normals.empty() ? normals : normals.subspan(b, count),

@@ -61,7 +61,8 @@ TEST(Mesh, NormalsAreOutwardOnATetrahedron) {
   m.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
   m.computeNormals();
   Vec3f c = m.bounds().center();
-  for (std::size_t i = 0; i < m.vertexCount(); ++i) EXPECT_GT(m.normals[i].dot(m.positions[i] - Vec3f(0.25f, 0.25f, 0.25f)), 0);
+  for (std::size_t i = 0; i < m.vertexCount(); ++i)
+    EXPECT_GT(m.normals[i].dot(m.positions[i] - Vec3f(0.25f, 0.25f, 0.25f)), 0);
   EXPECT_NEAR(c.x(), 0.5f, 1e-6);
   m.validate("tetra");
   m.triangles.push_back({0, 1, 7});
@@ -114,7 +115,8 @@ TEST(Parallel, SameResultForAnyThreadCount) {
   auto run = [](int threads) {
     ThreadLimit limit(threads);
     std::vector<float> out(100000);
-    parallelFor(0, out.size(), [&](std::int64_t i) { out[i] = uniform01(hashKey(3, i)); }, 64);
+    parallelFor(
+        0, out.size(), [&](std::int64_t i) { out[i] = uniform01(hashKey(3, i)); }, 64);
     return out;
   };
   EXPECT_EQ(run(1), run(2));

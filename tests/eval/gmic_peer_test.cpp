@@ -13,7 +13,9 @@
 namespace texsynth {
 namespace {
 
-bool gmicAvailable() { return std::system("command -v gmic >/dev/null 2>&1") == 0; }
+bool gmicAvailable() {
+  return std::system("command -v gmic >/dev/null 2>&1") == 0;
+}
 
 TEST(GmicPeer, TilingIsFarMorePeriodicThanGmicSynthesis) {
   auto pattern = gimpPattern("Stone/stone33.pat");  // 156x156 RGB, no internal repetition

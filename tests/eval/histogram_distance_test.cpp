@@ -1,18 +1,19 @@
 // Wasserstein-1 distances of value distributions.
+#include "texsynth/eval/histogram_distance.h"
+
 #include <gtest/gtest.h>
 
 #include "eval_test_images.h"
 #include "test_support.h"
-#include "texsynth/eval/histogram_distance.h"
 
 namespace texsynth {
 namespace {
 
 TEST(Wasserstein1, KnownValues) {
   EXPECT_DOUBLE_EQ(wasserstein1({0.0f}, {1.0f}), 1.0);
-  EXPECT_DOUBLE_EQ(wasserstein1({0, 1}, {1, 0, 0, 1}), 0.0);        // same distribution, other size
-  EXPECT_NEAR(wasserstein1({0, 1, 2}, {0, 2}), 1.0 / 3.0, 1e-12);   // |1/3-1/2| + |2/3-1/2|
-  EXPECT_DOUBLE_EQ(wasserstein1({3, 1, 2}, {5, 6, 4}), 3.0);        // order does not matter
+  EXPECT_DOUBLE_EQ(wasserstein1({0, 1}, {1, 0, 0, 1}), 0.0);       // same distribution, other size
+  EXPECT_NEAR(wasserstein1({0, 1, 2}, {0, 2}), 1.0 / 3.0, 1e-12);  // |1/3-1/2| + |2/3-1/2|
+  EXPECT_DOUBLE_EQ(wasserstein1({3, 1, 2}, {5, 6, 4}), 3.0);       // order does not matter
   EXPECT_NEAR(wasserstein1({0, 0, 0, 10}, {0}), 2.5, 1e-12);
 }
 

@@ -1,4 +1,6 @@
 // evaluateImage: the four metrics on synthetic images, bad inputs, determinism.
+#include "texsynth/eval/metrics.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -6,7 +8,6 @@
 #include "eval_test_images.h"
 #include "test_support.h"
 #include "texsynth/core/parallel.h"
-#include "texsynth/eval/metrics.h"
 
 namespace texsynth {
 namespace {
@@ -101,7 +102,9 @@ TEST(EvaluateImage, RejectsBadInput) {
   Image nan = good;
   nan.at(3, 4, 1) = std::nanf("");
   EXPECT_EQ(rejectedParameter([&] { evaluateImage(good, nan); }), "output");
-  auto withOptions = [&](MetricOptions options) { return rejectedParameter([&] { evaluateImage(good, good, options); }); };
+  auto withOptions = [&](MetricOptions options) {
+    return rejectedParameter([&] { evaluateImage(good, good, options); });
+  };
   EXPECT_EQ(withOptions({.patchSize = 6}), "patchSize");
   EXPECT_EQ(withOptions({.patchSize = 0}), "patchSize");
   EXPECT_EQ(withOptions({.periodicitySamples = 0}), "periodicitySamples");

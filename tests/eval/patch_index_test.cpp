@@ -1,4 +1,6 @@
 // PatchIndex: exact nearest neighbours and radius search against brute force.
+#include "texsynth/eval/patch_index.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -7,7 +9,6 @@
 #include "eval_test_images.h"
 #include "test_support.h"
 #include "texsynth/core/parallel.h"
-#include "texsynth/eval/patch_index.h"
 
 namespace texsynth {
 namespace {
@@ -91,7 +92,8 @@ TEST(PatchIndex, WithinMatchesBruteForce) {
       for (double limit : {0.0, 1.0, 4.0, 50.0}) {
         std::vector<int> expected;
         for (int i = 0; i < int(index.size()); ++i)
-          if (PatchIndex::meanSquaredDifference(image, x, y, image, i % index.columns(), i / index.columns(), 5) <= limit)
+          if (PatchIndex::meanSquaredDifference(image, x, y, image, i % index.columns(), i / index.columns(), 5) <=
+              limit)
             expected.push_back(i);
         EXPECT_EQ(index.within(image, x, y, limit), expected) << x << "," << y << " limit " << limit;
       }

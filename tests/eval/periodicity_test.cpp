@@ -1,4 +1,6 @@
 // Periodicity: tilings repeat at one offset, noise and textures do not.
+#include "texsynth/eval/periodicity.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -6,7 +8,6 @@
 #include "eval_test_images.h"
 #include "test_support.h"
 #include "texsynth/core/parallel.h"
-#include "texsynth/eval/periodicity.h"
 
 namespace texsynth {
 namespace {

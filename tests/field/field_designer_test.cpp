@@ -201,6 +201,8 @@ TEST(FieldDesigner, RejectsBadCurvesAndOptions) {
   FieldDesignOptions bad = smallGrid();
   bad.solver.weight = -1;
   test::expectParameterError([&] { FieldDesigner(unitCube(), bad); }, "weight");
+  bad.solver.weight = 1e6;  // beyond where the solver converges
+  test::expectParameterError([&] { FieldDesigner(unitCube(), bad); }, "weight");
   bad = smallGrid(1);
   test::expectParameterError([&] { FieldDesigner(unitCube(), bad); }, "shortestCells");
 }

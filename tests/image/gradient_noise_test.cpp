@@ -1,9 +1,10 @@
+#include "texsynth/core/gradient_noise.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "texsynth/core/error.h"
-#include "texsynth/core/gradient_noise.h"
 
 namespace texsynth {
 namespace {

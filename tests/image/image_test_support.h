@@ -1,11 +1,11 @@
 #pragma once
 // Helpers shared by the image-module tests: a real GIMP exemplar and periodicity in the
 // eval module's 0..255 units.
+#include <gtest/gtest.h>
+
 #include <functional>
 #include <optional>
 #include <string>
-
-#include <gtest/gtest.h>
 
 #include "texsynth/core/data_paths.h"
 #include "texsynth/core/error.h"
@@ -29,6 +29,5 @@ inline double periodicityOf(const Image& image, int samples = 500) {
   for (float& v : scaled.pixels) v *= 255.0f;
   return periodicity(PatchIndex(scaled, 7), PeriodicityOptions{.samples = samples});
 }
-
 
 }  // namespace texsynth::test

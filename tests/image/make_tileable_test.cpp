@@ -1,9 +1,10 @@
+#include "texsynth/image/make_tileable.h"
+
 #include <gtest/gtest.h>
 
 #include "image_test_support.h"
 #include "test_support.h"
 #include "texsynth/core/error.h"
-#include "texsynth/image/make_tileable.h"
 
 namespace texsynth {
 namespace {

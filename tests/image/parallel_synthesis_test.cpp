@@ -1,3 +1,5 @@
+#include "texsynth/image/parallel_synthesis.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,7 +11,6 @@
 #include "texsynth/core/error.h"
 #include "texsynth/core/parallel.h"
 #include "texsynth/eval/metrics.h"
-#include "texsynth/image/parallel_synthesis.h"
 
 namespace texsynth {
 namespace {
@@ -92,7 +93,8 @@ TEST(ParallelSynthesis, CoordinatesStayInsideTheExemplar) {
 
 TEST(ParallelSynthesis, ZeroJitterWithoutCorrectionIsPlainTiling) {
   const ExemplarAnalysis& analysis = patternAnalysis();
-  SourceCoordinates coords = synthesizeParallelCoordinates(analysis, {.passes = 0, .defaultJitter = 0.0f}, -9, 4, 70, 50);
+  SourceCoordinates coords =
+      synthesizeParallelCoordinates(analysis, {.passes = 0, .defaultJitter = 0.0f}, -9, 4, 70, 50);
   // The upsampled start is S(p) = p + constant (mod m): a shifted tiling of the exemplar.
   const std::int32_t* origin = coords.at(-9, 4);
   for (int y = 4; y < 54; ++y)
@@ -129,7 +131,8 @@ TEST(ParallelSynthesis, RealExemplarIsFarLessPeriodicThanTiling) {
   // Stronger jitter at the coarse levels breaks the repeats almost entirely (~0.03 measured).
   std::vector<float> strong(std::size_t(analysis.levelCount()), 0.4f);
   strong[0] = 1.0f, strong[1] = 0.7f;
-  const double jittered = evaluateImage(exemplar, synthesizeParallel(analysis, {.jitter = strong}, 0, 0, 128, 128), metrics).periodicity;
+  const double jittered =
+      evaluateImage(exemplar, synthesizeParallel(analysis, {.jitter = strong}, 0, 0, 128, 128), metrics).periodicity;
   EXPECT_LT(jittered, 0.1);
 }
 

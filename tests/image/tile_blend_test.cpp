@@ -1,3 +1,5 @@
+#include "texsynth/image/tile_blend.h"
+
 #include <gtest/gtest.h>
 
 #include "image_test_support.h"
@@ -5,7 +7,6 @@
 #include "texsynth/core/error.h"
 #include "texsynth/core/parallel.h"
 #include "texsynth/eval/histogram_distance.h"
-#include "texsynth/image/tile_blend.h"
 
 namespace texsynth {
 namespace {
@@ -52,6 +53,7 @@ TEST(TileBlend, RejectsBadParameters) {
   expectRejected({.gaussianization = {.lutSize = 0}}, "lutSize");
   EXPECT_THROW(synthesizeTileBlend(Image(), {}, 0, 0, 8, 8), ParameterError);
   EXPECT_THROW(synthesizeTileBlend(exemplar, {}, 0, 0, 8, -1), ParameterError);
+  test::expectParameterError([&] { synthesizeTileBlend(exemplar, {}, std::int64_t(1) << 58, 0, 8, 8); }, "x0");
 }
 
 TEST(TileBlend, RealExemplarIsFarLessPeriodicThanTiling) {

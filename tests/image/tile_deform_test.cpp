@@ -1,3 +1,5 @@
+#include "texsynth/image/tile_deform.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -6,7 +8,6 @@
 #include "test_support.h"
 #include "texsynth/core/error.h"
 #include "texsynth/core/parallel.h"
-#include "texsynth/image/tile_deform.h"
 
 namespace texsynth {
 namespace {
@@ -45,7 +46,8 @@ TEST(TileDeform, DeformsAndDoesNotDependOnThreadCount) {
 
 TEST(TileDeform, DisplacementIsClampedAndDirectionLimited) {
   Image exemplar = test::makeTestPattern(32, 32);
-  TileDeformTexture clamped(exemplar, {.cellWidth = 10, .cellHeight = 20, .lambdaX = 5, .lambdaY = 5, .maxDisplacement = 0.3f});
+  TileDeformTexture clamped(exemplar,
+                            {.cellWidth = 10, .cellHeight = 20, .lambdaX = 5, .lambdaY = 5, .maxDisplacement = 0.3f});
   bool reachedLimit = false;
   for (int i = -20; i < 20; ++i)
     for (int j = -20; j < 20; ++j) {
@@ -81,9 +83,13 @@ TEST(TileDeform, RejectsBadParameters) {
   expectRejected({.lambdaX = -0.1f}, "lambdaX");
   expectRejected({.lambdaY = INFINITY}, "lambdaY");
   expectRejected({.maxDisplacement = -1}, "maxDisplacement");
+  expectRejected({.maxDisplacement = 0.5f}, "maxDisplacement");  // cells could fold, as in 3D
   expectRejected({.noiseFrequency = 0}, "noiseFrequency");
   EXPECT_THROW(synthesizeTileDeform(Image(), {}, 0, 0, 8, 8), ParameterError);
   EXPECT_THROW(synthesizeTileDeform(exemplar, {}, 0, 0, 0, 8), ParameterError);
+  // Far from the origin, positions stop resolving pixels: the window rule of every random-access method.
+  test::expectParameterError([&] { synthesizeTileDeform(exemplar, {}, std::int64_t(1) << 58, 0, 8, 8); }, "x0");
+  test::expectParameterError([&] { synthesizeTileDeform(exemplar, {}, 0, -(std::int64_t(1) << 28), 8, 8); }, "y0");
 }
 
 TEST(TileDeform, RealExemplarIsFarLessPeriodicThanTiling) {

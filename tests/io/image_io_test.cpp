@@ -386,6 +386,40 @@ TEST(ImageIo, AbsurdDeclaredSizesAreRejectedBeforeDecoding) {
   expectReadError(dir.file("lying.exr"), "more than any OpenEXR compression could pack");
 }
 
+// Found by fuzz/fuzz_image: a GIMP pattern's pixels are raw, yet a tiny .pat claiming a large
+// image (within the 2^31-value limit) allocated the whole image before finding the file short.
+TEST(ImageIo, ShortPatternIsRejectedBeforeAllocating) {
+  TempDir dir;
+  writeImage(dir.file("a.pat"), patternWithChannels(4, 4, 4));
+  std::string pat = readBytes(dir.file("a.pat"));
+  patch32(pat, 8, 16384, true);  // 16384 x 16384 RGBA: 4 GiB as floats, from a 100-byte file
+  patch32(pat, 12, 16384, true);
+  test::writeBytes(dir.file("short.pat"), pat);
+  rusage before{}, after{};
+  getrusage(RUSAGE_SELF, &before);
+  expectReadError(dir.file("short.pat"), "truncated: header says 16384x16384 RGBA but only 64 bytes of pixel data");
+  getrusage(RUSAGE_SELF, &after);
+  EXPECT_LT(after.ru_maxrss - before.ru_maxrss, 256 * 1024)
+      << "peak memory grew by " << after.ru_maxrss - before.ru_maxrss << " KiB";
+}
+
+// Found by fuzz/fuzz_image (80 bytes, minimized): an OpenEXR header whose reads seek to an offset
+// near 2^64, where MemoryInput's "position + n > size" check wraps around and memcpy reads
+// before the buffer. Release builds happen to fail cleanly; the sanitizer build
+// (cmake --preset debug) reports the out-of-bounds read until the check is overflow-safe.
+TEST(ImageIo, ExrSeekPastTheEndIsAnInputError) {
+  const unsigned char bytes[] = {
+      0x76, 0x2f, 0x31, 0x01, 0x02, 0x00, 0x00, 0x00, 0x63, 0x68, 0x61, 0x6e, 0x6e, 0x65, 0x6c, 0x73,
+      0x00, 0x63, 0x68, 0x6c, 0x69, 0x73, 0x74, 0x00, 0x25, 0x00, 0x00, 0x00, 0x41, 0x00, 0x02, 0x00,
+      0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x01, 0x00, 0x00, 0x00, 0x01, 0x00, 0x00, 0x00, 0x00, 0x00,
+      0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff,
+      0xff, 0xff, 0xff, 0x3d, 0xcd, 0xcc, 0x4c, 0x3f, 0x14, 0xae, 0x07, 0x3f, 0xb8, 0x1e, 0x85, 0x3e,
+  };
+  TempDir dir;
+  test::writeBytes(dir.file("seek.exr"), std::string(reinterpret_cast<const char*>(bytes), sizeof(bytes)));
+  expectReadError(dir.file("seek.exr"));
+}
+
 // Flipped bytes anywhere in valid files: each read either succeeds with a sane image or
 // throws InputError; never a crash, hang, huge allocation or other exception type.
 TEST(ImageIo, CorruptedFilesNeverCrash) {

@@ -172,12 +172,52 @@ TEST(VolumeIo, MalformedNrrdsAreInputErrors) {
             "NRRD0004\ntype: float\ndimension: 3\nsizes: 1024 1024 512\nendian: little\nencoding: gzip\n\n" +
                 gzipOf(std::string(1000, '\0'))),
       "cannot hold");
-  expectReadError(write("badgz.nrrd", ok + "encoding: gzip\n\nnot gzip at all"), "corrupt gzip");
-  expectReadError(write("shortgz.nrrd", ok + "encoding: gzip\n\n" + gzipOf("1234")),
-                  "gzip data holds only 4 of the 8 bytes");
+  const std::string okGzip = "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 2 2 2\nencoding: gzip\n";
+  expectReadError(write("badgz.nrrd", okGzip + "\nnot gzip at all"), "corrupt gzip");
+  expectReadError(write("shortgz.nrrd", okGzip + "\n" + gzipOf("1234")), "gzip data holds only 4 of the 8 bytes");
 
   test::writeBytes(dir.file("v.vdb"), "whatever");
   expectReadError(dir.file("v.vdb"), ".nrrd");
+}
+
+// Headers that contradict themselves or their data used to be read anyway (issue 13).
+TEST(VolumeIo, InconsistentNrrdsAreInputErrors) {
+  TempDir dir;
+  auto write = [&](const std::string& name, const std::string& bytes) {
+    test::writeBytes(dir.file(name), bytes);
+    return dir.file(name);
+  };
+  const std::string scalar = "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 2 2 2\n";
+  const std::string eight(8, 'x');
+  ASSERT_NO_THROW(readVolume(write("ok.nrrd", scalar + "encoding: raw\n\n" + eight)));
+  ASSERT_NO_THROW(readVolume(write("okgz.nrrd", scalar + "encoding: gzip\n\n" + gzipOf(eight))));
+
+  expectReadError(write("trailing.nrrd", scalar + "encoding: raw\n\n" + eight + "zz"), "2 more bytes follow them");
+  expectReadError(write("moregz.nrrd", scalar + "encoding: gzip\n\n" + gzipOf(eight + "zz")),
+                  "gzip data holds more samples than the header says");
+  expectReadError(write("aftergz.nrrd", scalar + "encoding: gzip\n\n" + gzipOf(eight) + "zz"),
+                  "2 bytes follow the end of the gzip data");
+  expectReadError(write("rgb3d.nrrd", scalar + "kinds: domain domain RGB-color\nencoding: raw\n\n" + eight),
+                  "axis 2 is 'RGB-color', but a 3-D NRRD is a scalar volume");
+  expectReadError(write("kindcount.nrrd", scalar + "kinds: domain domain\nencoding: raw\n\n" + eight),
+                  "'kinds' (line 5) lists 2 axes, but the dimension is 3");
+  expectReadError(write("spacings.nrrd", scalar + "spacings: 1 1 1 1\nencoding: raw\n\n" + eight),
+                  "'spacings' (line 5) lists 4 axes");
+  expectReadError(write("unknownkind.nrrd", scalar + "kinds: domain domain dommain\nencoding: raw\n\n" + eight),
+                  "'dommain', an unknown kind");
+  expectReadError(write("rgb2.nrrd",
+                        "NRRD0004\ntype: uint8\ndimension: 4\nsizes: 2 2 2 1\nkinds: RGB-color domain domain domain\n"
+                        "encoding: raw\n\n" +
+                            eight),
+                  "which has 3 values, but its size is 2");
+  expectReadError(write("twice.nrrd", scalar + "encoding: raw\nsizes: 2 2 1\n\n" + eight),
+                  "line 6 repeats the field 'sizes' of line 4");
+  expectReadError(write("alias.nrrd", scalar + "encoding: raw\nbyte skip: 0\nbyteskip: 0\n\n" + eight), "repeats");
+  expectReadError(write("unknown.nrrd", scalar + "encodeing: raw\n\n" + eight), "unknown field 'encodeing'");
+  expectReadError(write("number.nrrd", scalar + "number: 9\nencoding: raw\n\n" + eight),
+                  "'number: 9' disagrees with sizes 2x2x2 (8 samples)");
+  expectReadError(write("magic.nrrd", "NRRD0004 trailing\n" + scalar.substr(9) + "encoding: raw\n\n" + eight),
+                  "not a NRRD file");
 }
 
 TEST(VolumeIo, TruncatedAndRandomNrrdsAreInputErrors) {

@@ -1,9 +1,10 @@
+#include "texsynth/render/primitives.h"
+
 #include <gtest/gtest.h>
 
 #include <numbers>
 
 #include "texsynth/core/error.h"
-#include "texsynth/render/primitives.h"
 
 using namespace texsynth;
 

@@ -1,3 +1,5 @@
+#include "texsynth/render/render_mesh.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,7 +9,6 @@
 #include "texsynth/core/error.h"
 #include "texsynth/core/parallel.h"
 #include "texsynth/render/primitives.h"
-#include "texsynth/render/render_mesh.h"
 
 using namespace texsynth;
 using namespace texsynth::test;
@@ -34,7 +35,8 @@ Mesh tiltedQuad(const Vec3f& normal, float offset) {
   Vec3f n = normal.normalized();
   Vec3f u = n.unitOrthogonal(), v = n.cross(u);
   Mesh quad;
-  for (const Vec3f& corner : std::initializer_list<Vec3f>{-u - v, u - v, u + v, -u + v}) quad.positions.push_back(offset * n + corner);
+  for (const Vec3f& corner : std::initializer_list<Vec3f>{-u - v, u - v, u + v, -u + v})
+    quad.positions.push_back(offset * n + corner);
   quad.triangles = {{0, 1, 2}, {0, 2, 3}};
   return quad;
 }
@@ -156,7 +158,8 @@ TEST(RenderMesh, ColorFunctionPointsArePerspectiveCorrect) {
   options.pitchDegrees = 35;
   options.supersample = 2;
   std::vector<Vec3f> seen;
-  SurfaceColorFunction record = [&](const std::vector<Vec3f>& points, const std::vector<Vec3f>&, std::vector<Vec3f>& colors) {
+  SurfaceColorFunction record = [&](const std::vector<Vec3f>& points, const std::vector<Vec3f>&,
+                                    std::vector<Vec3f>& colors) {
     seen = points;
     colors.assign(points.size(), Vec3f::Ones());
   };
@@ -205,8 +208,8 @@ TEST(RenderMesh, ImageIsOrientedNotMirroredOrUpsideDown) {
     return Vec2f(sum / float(std::max(count, 1)));
   };
   const Image front = renderMesh(scene, frontView(96));  // camera on +Z: x right, y up
-  EXPECT_GT(centroidOf(front, 0).x(), 60);  // +X to the right
-  EXPECT_LT(centroidOf(front, 1).y(), 36);  // +Y at the top
+  EXPECT_GT(centroidOf(front, 0).x(), 60);               // +X to the right
+  EXPECT_LT(centroidOf(front, 1).y(), 36);               // +Y at the top
   RenderOptions side = frontView(96);
   side.yawDegrees = 90;  // camera on +X looking towards -X: +Z is on the left
   const Image fromRight = renderMesh(scene, side);

@@ -42,7 +42,8 @@ TEST(RenderOptions, InvalidOptionsThrowNamingTheOption) {
   expectParameterError("fovDegrees", with([](RenderOptions& o) { o.fovDegrees = 0; }));
   expectParameterError("fovDegrees", with([](RenderOptions& o) { o.fovDegrees = 180; }));
   expectParameterError("yawDegrees", with([=](RenderOptions& o) { o.yawDegrees = nan; }));
-  expectParameterError("pitchDegrees", with([](RenderOptions& o) { o.pitchDegrees = std::numeric_limits<float>::infinity(); }));
+  expectParameterError("pitchDegrees",
+                       with([](RenderOptions& o) { o.pitchDegrees = std::numeric_limits<float>::infinity(); }));
   expectParameterError("margin", with([](RenderOptions& o) { o.margin = -0.1f; }));
   expectParameterError("ambient", with([](RenderOptions& o) { o.ambient = 1.5f; }));
   expectParameterError("ambient", with([=](RenderOptions& o) { o.ambient = nan; }));
@@ -65,7 +66,9 @@ TEST(RenderOptions, InvalidOptionsThrowNamingTheOption) {
   });
 }
 
-TEST(RenderOptions, DefaultsAreValid) { EXPECT_NO_THROW(validateRenderOptions(RenderOptions())); }
+TEST(RenderOptions, DefaultsAreValid) {
+  EXPECT_NO_THROW(validateRenderOptions(RenderOptions()));
+}
 
 TEST(RenderOptions, InvalidMeshesThrowInputError) {
   RenderOptions options;

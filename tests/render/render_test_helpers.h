@@ -28,7 +28,9 @@ inline void appendMesh(Mesh& mesh, const Mesh& part, const Vec3f& color) {
   for (const Vec3i& t : part.triangles) mesh.triangles.push_back(t + Vec3i::Constant(base));
 }
 
-inline Vec3f pixelColor(const Image& image, int x, int y) { return {image.at(x, y, 0), image.at(x, y, 1), image.at(x, y, 2)}; }
+inline Vec3f pixelColor(const Image& image, int x, int y) {
+  return {image.at(x, y, 0), image.at(x, y, 1), image.at(x, y, 2)};
+}
 
 inline bool isBackground(const Image& image, int x, int y, const Vec3f& background) {
   return (pixelColor(image, x, y) - background).cwiseAbs().maxCoeff() < 1e-6f;

@@ -1,9 +1,10 @@
+#include "texsynth/render/slice_montage.h"
+
 #include <gtest/gtest.h>
 
 #include <limits>
 
 #include "texsynth/core/error.h"
-#include "texsynth/render/slice_montage.h"
 
 using namespace texsynth;
 
@@ -15,7 +16,8 @@ Volume coordinateVolume(int nx, int ny, int nz, int channels) {
   for (int z = 0; z < nz; ++z)
     for (int y = 0; y < ny; ++y)
       for (int x = 0; x < nx; ++x)
-        for (int c = 0; c < channels; ++c) volume.at(x, y, z, c) = 0.01f * float(x + 10 * y) + 0.001f * float(z) + 0.1f * float(c);
+        for (int c = 0; c < channels; ++c)
+          volume.at(x, y, z, c) = 0.01f * float(x + 10 * y) + 0.001f * float(z) + 0.1f * float(c);
   return volume;
 }
 

@@ -113,7 +113,8 @@ TEST(LazySolid, IntegratedNeighbourhoodsChangeTheResultOnlyWithACurvedField) {
                     *synthesize(integrated, constantOrientation(identity)), {0, 0, 0}, {8, 8, 8});
   auto a = synthesize(nearest, curvedOrientation()), b = synthesize(integrated, curvedOrientation());
   int differ = 0;
-  for (int i = 0; i < 512; ++i) differ += a->triple({i % 8, i / 8 % 8, i / 64}, 0) != b->triple({i % 8, i / 8 % 8, i / 64}, 0);
+  for (int i = 0; i < 512; ++i)
+    differ += a->triple({i % 8, i / 8 % 8, i / 64}, 0) != b->triple({i % 8, i / 8 % 8, i / 64}, 0);
   EXPECT_GT(differ, 0);
 }
 
@@ -185,7 +186,7 @@ TEST(LazySolid, GridPlanCoversCellsAndTheirReach) {
   EXPECT_EQ(plan.layers.back(), deliver);
   const lazy::LazyDependencyPlan primaryOnly = lazy::planGridLevel(deliver, 8, 2, false);
   EXPECT_TRUE(primaryOnly.dualCells.empty());
-  EXPECT_EQ(primaryOnly.primaryCells.size(), 1u);  // 0..3 lies in cell 0
+  EXPECT_EQ(primaryOnly.primaryCells.size(), 1u);              // 0..3 lies in cell 0
   EXPECT_EQ(primaryOnly.layers.front().size(), 4u * 4u * 4u);  // -2..9: blocks -1..2
 }
 

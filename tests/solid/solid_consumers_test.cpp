@@ -1,3 +1,5 @@
+#include "texsynth/solid/solid_consumers.h"
+
 #include <gtest/gtest.h>
 
 #include "solid_test_support.h"
@@ -6,7 +8,6 @@
 #include "texsynth/core/error.h"
 #include "texsynth/io/mesh_io.h"
 #include "texsynth/render/primitives.h"
-#include "texsynth/solid/solid_consumers.h"
 #include "texsynth/solid/tile_deform_solid.h"
 
 using namespace texsynth;
@@ -70,7 +71,8 @@ TEST(SolidConsumers, RenderAdapterEvaluatesEveryPixel) {
   const Image perVertex = renderMesh(sphere, options);
   ASSERT_EQ(perPixel.width, 64);
   double difference = 0;
-  for (std::size_t i = 0; i < perPixel.pixels.size(); ++i) difference += std::abs(perPixel.pixels[i] - perVertex.pixels[i]);
+  for (std::size_t i = 0; i < perPixel.pixels.size(); ++i)
+    difference += std::abs(perPixel.pixels[i] - perVertex.pixels[i]);
   EXPECT_GT(difference, 1.0) << "per-pixel colours must not be interpolated vertex colours";
 }
 

@@ -1,9 +1,9 @@
 #pragma once
 // Shared fixtures for the solid tests: random points/normals and a small exemplar volume.
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <string>
-
-#include <gtest/gtest.h>
 #include <vector>
 
 #include "texsynth/core/error.h"
@@ -16,7 +16,8 @@ namespace texsynth::test {
 inline std::vector<Vec3f> randomPoints(int count, float extent, std::uint64_t seed = 7) {
   std::vector<Vec3f> points(static_cast<std::size_t>(count));
   for (int i = 0; i < count; ++i)
-    for (int a = 0; a < 3; ++a) points[i][a] = (uniform01(hashKey(seed, std::uint64_t(i), std::uint64_t(a))) - 0.5f) * extent;
+    for (int a = 0; a < 3; ++a)
+      points[i][a] = (uniform01(hashKey(seed, std::uint64_t(i), std::uint64_t(a))) - 0.5f) * extent;
   return points;
 }
 
@@ -39,6 +40,5 @@ inline Volume makeTestVolume(int n) {
       }
   return v;
 }
-
 
 }  // namespace texsynth::test

@@ -1,3 +1,5 @@
+#include "texsynth/solid/tile_blend_solid.h"
+
 #include <gtest/gtest.h>
 
 #include "solid_test_support.h"
@@ -8,7 +10,6 @@
 #include "texsynth/eval/histogram_distance.h"
 #include "texsynth/io/image_io.h"
 #include "texsynth/solid/solid_consumers.h"
-#include "texsynth/solid/tile_blend_solid.h"
 
 using namespace texsynth;
 
@@ -55,7 +56,8 @@ TEST(TileBlendSolid, DeterministicAcrossThreadsAndBatchSplit) {
   }
   EXPECT_EQ(one, two);
   const std::span<const Vec3f> p(points), n(normals);
-  for (std::size_t i : {0ul, 4095ul, 4096ul, 9999ul}) EXPECT_EQ(solid->evaluateColors(p.subspan(i, 1), n.subspan(i, 1))[0], one[i]);
+  for (std::size_t i : {0ul, 4095ul, 4096ul, 9999ul})
+    EXPECT_EQ(solid->evaluateColors(p.subspan(i, 1), n.subspan(i, 1))[0], one[i]);
 }
 
 TEST(TileBlendSolid, AxisNormalUsesOnePlaneOnly) {

@@ -1,3 +1,5 @@
+#include "texsynth/solid/tile_deform_solid.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -6,7 +8,6 @@
 #include "test_support.h"
 #include "texsynth/core/error.h"
 #include "texsynth/core/parallel.h"
-#include "texsynth/solid/tile_deform_solid.h"
 
 using namespace texsynth;
 
@@ -50,7 +51,9 @@ TEST(TileDeformSolid, ZeroLambdaIsPlainStacking) {
     const auto values = evaluateAll(*makeStackedTileDeformSolid(exemplar, options), points);
     for (std::size_t i = 0; i < points.size(); ++i) {
       const Vec3f& p = points[i];
-      const Vec2f uv = axes == StackAxes::X ? Vec2f(p.y(), p.z()) : axes == StackAxes::Y ? Vec2f(p.x(), p.z()) : Vec2f(p.x(), p.y());
+      const Vec2f uv = axes == StackAxes::X   ? Vec2f(p.y(), p.z())
+                       : axes == StackAxes::Y ? Vec2f(p.x(), p.z())
+                                              : Vec2f(p.x(), p.y());
       exemplar.sampleBilinearWrapped(uv.x(), uv.y(), expected);
       for (int c = 0; c < exemplar.channels; ++c) ASSERT_EQ(values[i * exemplar.channels + c], expected[c]);
     }
@@ -111,7 +114,8 @@ TEST(TileDeformSolid, DeterministicAcrossThreadsBatchesAndOrder) {
   const std::span<const Vec3f> rp(reversedPoints), rn(reversedNormals);
   for (std::size_t begin = 0; begin < points.size(); begin += 37) {
     const std::size_t count = std::min<std::size_t>(37, points.size() - begin);
-    solid->evaluateSerial(rp.subspan(begin, count), rn.subspan(begin, count), std::span<float>(reversed).subspan(begin * 3, count * 3));
+    solid->evaluateSerial(rp.subspan(begin, count), rn.subspan(begin, count),
+                          std::span<float>(reversed).subspan(begin * 3, count * 3));
   }
   for (std::size_t i = 0; i < points.size(); ++i)
     for (int c = 0; c < 3; ++c) ASSERT_EQ(reversed[(points.size() - 1 - i) * 3 + c], reference[i * 3 + c]);
@@ -122,7 +126,8 @@ TEST(TileDeformSolid, SeedChangesDeformation) {
   TileDeformSolidOptions other;
   other.deformation.seed = 2;
   const auto points = test::randomPoints(200, 300.0f);
-  EXPECT_NE(evaluateAll(*makeTileDeformSolid(exemplar, {}), points), evaluateAll(*makeTileDeformSolid(exemplar, other), points));
+  EXPECT_NE(evaluateAll(*makeTileDeformSolid(exemplar, {}), points),
+            evaluateAll(*makeTileDeformSolid(exemplar, other), points));
 }
 
 TEST(TileDeformSolid, DeformedCornersStayWithinTheClamp) {
@@ -132,7 +137,8 @@ TEST(TileDeformSolid, DeformedCornersStayWithinTheClamp) {
   GridDeformation3d deformation(options);
   float largest = 0;
   for (int i = 0; i < 20; ++i)
-    for (int j = 0; j < 20; ++j) largest = std::max(largest, deformation.cornerDisplacement(i, j, i - j).cwiseAbs().maxCoeff());
+    for (int j = 0; j < 20; ++j)
+      largest = std::max(largest, deformation.cornerDisplacement(i, j, i - j).cwiseAbs().maxCoeff());
   EXPECT_LE(largest, 0.3f * 32.0f);
   EXPECT_GT(largest, 0.29f * 32.0f);
 }

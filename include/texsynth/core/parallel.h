@@ -30,4 +30,8 @@ class ThreadLimit {
 
 int hardwareThreads();
 
+// The number of threads parallelFor may use now: the innermost ThreadLimit, else all cores.
+// For libraries with pools of their own (OpenEXR), so they honour --threads too.
+int threadLimit();
+
 }  // namespace texsynth

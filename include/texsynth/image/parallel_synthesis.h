@@ -58,7 +58,7 @@ struct SourceCoordinates {
 
 // Synthesizes the source coordinates of output window (x0, y0, w, h) at the finest level.
 // Throws ParameterError for an empty analysis ("analysis"), a bad window ("width",
-// "height", "x0", "y0": |coordinate| must stay below 2^28), passes < 0 ("passes"), or a
+// "height", "x0", "y0": requireWindow's +-2^28), passes < 0 ("passes"), or a
 // jitter list of the wrong size or with negative / non-finite entries ("jitter").
 // Progress: one stage, one unit per level.
 SourceCoordinates synthesizeParallelCoordinates(const ExemplarAnalysis& analysis,

@@ -24,7 +24,7 @@ struct TileDeformOptions {
   float cellWidth = 0, cellHeight = 0;
   // Noise factors λx, λy of eq. 1: displacement = noise * λ * cell size (noise in [-1, 1]).
   float lambdaX = 0.35f, lambdaY = 0.35f;
-  // Clamp threshold: |displacement| <= maxDisplacement * cell size per axis (>= 0). 0.45 keeps
+  // Clamp threshold: |displacement| <= maxDisplacement * cell size per axis, in [0, 0.5). 0.45 keeps
   // neighbouring corners from crossing, so cells never fold.
   float maxDisplacement = 0.45f;
   // Noise frequency in noise-lattice periods per grid cell (> 0): low values deform smoothly

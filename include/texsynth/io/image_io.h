@@ -30,15 +30,27 @@ ImageFileInfo readImageInfo(const std::string& path);
 struct ImageWriteOptions {
   int bitsPerChannel = 8;  // 8 or 16; 16 is honoured by PNG only (other formats ignore it)
   int jpegQuality = 95;    // 1..100, JPEG only
+  // EXR: half floats even for values between 8-bit levels, for data made from 8-bit sources
+  // (half's 11-bit mantissa keeps more than they have); half the size and much faster to
+  // compress. Off: lossless (see writeImage). Never for coordinates.
+  bool exrHalf = false;
 };
 
+// Options that keep an input's precision where the output format can: 16 bits per channel
+// (PNG) for an input with more than 8 (a 16-bit PNG, a half or float EXR), else 8; half-float
+// EXR for an input of at most 8 bits.
+ImageWriteOptions writeOptionsKeeping(const ImageFileInfo& input);
+
 // Writes an image with 1..4 channels; the format comes from the extension:
-//   .png        8 or 16 bit, 1..4 channels as given
-//   .jpg .jpeg  8 bit RGB: alpha is dropped and gray is stored as color (stb's encoder always
-//               writes three components), so gray images come back as RGB with R = G = B
+//   .png        8 or 16 bit, 1..4 channels as given; deflated on all threads (--threads),
+//               the bytes independent of the thread count
+//   .jpg .jpeg  8 bit RGB (libjpeg-turbo): alpha is dropped and gray is stored as color, so
+//               gray images come back as RGB with R = G = B
 //   .bmp        8 bit RGB (gray is expanded; 2 channels become RGBA, 4 stay RGBA)
 //   .tga        8 bit, 1..4 channels as given
-//   .exr        32-bit float, lossless ZIP compression; channels Y, YA, RGB or RGBA
+//   .exr        lossless: half floats if every value is an 8-bit level k/255 (read back
+//               exactly by readImage), else 32-bit floats (half with options.exrHalf);
+//               PIZ-compressed on all threads; channels Y, YA, RGB or RGBA
 //   .pat        GIMP pattern, 8 bit, 1..4 channels; the pattern name is the file stem
 // Values outside [0,1] are clipped only where the format stores integers (NaN becomes 0).
 // Throws ParameterError for an unknown extension, an empty image, a bad channel count or bad

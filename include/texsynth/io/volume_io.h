@@ -16,7 +16,11 @@ namespace texsynth {
 // Reads a .nrrd volume. Sample types: uint8, uint16, float (also int8, int16, int32, uint32,
 // double). Integer samples are divided by their type's maximum (uint8 by 255, int16 by 32767
 // ...), so 8/16-bit volumes come back in [0,1] like images; float and double are as stored.
-// Detached data files ("data file:"), "line skip" and "byte skip" are rejected.
+// Detached data files ("data file:"), "line skip" and "byte skip" are rejected, and so is a
+// file that contradicts itself: more data than 'sizes' says (raw, gzip or after the gzip
+// stream), an unknown or repeated header field, a per-axis field ('kinds', 'spacings' ...)
+// with the wrong number of axes, or a 'kinds' entry that does not fit its axis (RGB-color on
+// a 3-D scalar volume, a channel kind whose size is not the channel count).
 Volume readVolume(const std::string& path);
 
 struct VolumeWriteOptions {

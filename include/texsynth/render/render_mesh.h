@@ -14,8 +14,8 @@ namespace texsynth {
 
 // Colours for a batch of visible surface points: world positions and unit normals in,
 // one RGB colour in [0,1] per point out (the callee resizes `colors` to points.size()).
-using SurfaceColorFunction =
-    std::function<void(const std::vector<Vec3f>& points, const std::vector<Vec3f>& normals, std::vector<Vec3f>& colors)>;
+using SurfaceColorFunction = std::function<void(const std::vector<Vec3f>& points, const std::vector<Vec3f>& normals,
+                                                std::vector<Vec3f>& colors)>;
 
 struct RenderOptions {
   // Output size in pixels; each in [1, 16384].
@@ -63,6 +63,11 @@ Image renderMesh(const Mesh& mesh, const SurfaceColorFunction& colorAt, const Re
 // (per-vertex colours); otherwise it is called once per view.
 Image renderViews(const Mesh& mesh, const SurfaceColorFunction* colorAt,
                   const std::vector<std::pair<float, float>>& yawPitch, const RenderOptions& options = {});
+
+// Peak bytes renderViews needs for `views` views (each sample's depth, colour and surface point,
+// the views and their joined copy; measured at 1024² and 2048²: about 13 bytes a supersample),
+// for checks before any work.
+double renderMemoryBytes(const RenderOptions& options, int views);
 
 // RGB images left to right on a white background, `gap` pixels apart and from the border,
 // aligned at the top (e.g. surface views and a cut view; gap 0 simply joins them).

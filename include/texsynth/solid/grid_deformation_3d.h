@@ -48,8 +48,8 @@ class GridDeformation3d {
 
  private:
   GridDeformationOptions options_;
-  Vec3f maxDisplacement_;            // clamp * cellSize
-  Vec3f componentOffset_[3];         // decorrelate the three noise components
+  Vec3f maxDisplacement_;     // clamp * cellSize
+  Vec3f componentOffset_[3];  // decorrelate the three noise components
   std::uint64_t componentSeed_[3];
 };
 

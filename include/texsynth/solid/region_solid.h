@@ -37,7 +37,8 @@ class RegionSolidTexture : public SolidTexture {
 };
 
 // Region 0 within `depth` (world units, > 0) of the mesh's surface or outside it, region 1
-// deeper inside: a shell and a core (inside by ray parity: the mesh should be closed). Throws ParameterError("depth", ...) unless depth is finite and > 0, InputError
+// deeper inside: a shell and a core (inside by ray parity: the mesh should be closed). Throws ParameterError("depth",
+// ...) unless depth is finite and > 0, InputError
 // ("mesh", ...) for a mesh without triangles.
 RegionSolidTexture::RegionRule surfaceShellRule(const Mesh& mesh, float depth);
 

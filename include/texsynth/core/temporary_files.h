@@ -1,0 +1,30 @@
+#pragma once
+// The temporary files behind atomic writes. Each is named so that a later run recognizes it
+// (".NAME.texsynth-tmp-HOST-PID-N.EXT" beside the target) and registered so that a catchable
+// signal removes it before the process dies; one left by an uncatchable death (SIGKILL, power
+// loss) is removed by the next write into its directory once its process is gone.
+#include <string>
+
+namespace texsynth {
+
+// A fresh temporary name beside `target`, keeping the target's extension last (some writers
+// pick the format from it).
+std::string temporaryPathFor(const std::string& target);
+
+// True if `fileName` (no directory) is a temporary of an atomic write.
+bool isTemporaryName(const std::string& fileName);
+
+// Signal-safe registry of the temporaries that exist right now.
+void registerTemporary(const std::string& path);
+void unregisterTemporary(const std::string& path);
+
+// On SIGINT, SIGTERM, SIGHUP and SIGQUIT: remove every registered temporary, then die of the
+// signal as before. SIGXFSZ is ignored, so a write past the file-size limit fails with an error
+// (EFBIG) that the writer reports instead of killing the process. Idempotent.
+void removeTemporariesOnSignals();
+
+// Removes the temporaries in `directory` whose process is gone (same host, dead PID); returns
+// how many. Done once per directory and process by every atomic write.
+int removeStaleTemporaries(const std::string& directory);
+
+}  // namespace texsynth
