@@ -28,7 +28,7 @@ DeformDirections parseDirections(const std::string& text) {
 }
 
 // Makes the exemplar tileable when asked, or when its wrap-around seams are visible ("auto").
-Image prepareExemplar(const ImageArgs& args, json& report) {
+Image prepareExemplar(const ImageArgs& args, const ImageWriteOptions& keepPrecision, json& report) {
   Image exemplar = readImage(args.exemplar);
   SeamStrength before = measureSeams(exemplar);
   report["seam_ratio_before"] = before.ratio();
@@ -38,13 +38,12 @@ Image prepareExemplar(const ImageArgs& args, json& report) {
     report["seam_ratio_after"] = measureSeams(exemplar).ratio();
   }
   report["made_tileable"] = convert;
-  if (!args.saveTileable.empty())
-    writeImage(args.saveTileable, exemplar, writeOptionsKeeping(readImageInfo(args.exemplar)));
+  if (!args.saveTileable.empty()) writeImage(args.saveTileable, exemplar, keepPrecision);
   return exemplar;
 }
 
-void finish(const ImageArgs& args, const GlobalOptions& globals, const Window& window, Image result, double seconds,
-            json& report);
+void finish(const ImageArgs& args, const GlobalOptions& globals, const ImageFileInfo& exemplarInfo,
+            const Window& window, Image result, double seconds, json& report);
 
 const std::vector<std::string> kSynthesisModes = {"tile-deform", "tile-blend", "parallel", "optimize"};
 
@@ -137,15 +136,17 @@ void runImage(const CLI::App& parser, const ImageArgs& args, const GlobalOptions
                          "with " + (args.applyCoords.empty() ? "--method " + mode : mode));
   requireCoordinateFile(args.coords, "--coords");
   requireCoordinateFile(args.applyCoords, "--apply-coords");
+  // Read once: the outputs keep the exemplar's precision where their format can.
+  const ImageFileInfo exemplarInfo = readImageInfo(args.exemplar);
   json report = {{"exemplar", args.exemplar}, {"method", args.method}, {"seed", globals.seed}};
   if (!args.applyCoords.empty()) {
     report["method"] = "apply-coords";
     report["made_tileable"] = false;
     Image result = applyCoordinates(readImage(args.exemplar), args, report);
     window.width = result.width, window.height = result.height;
-    return finish(args, globals, window, std::move(result), 0.0, report);
+    return finish(args, globals, exemplarInfo, window, std::move(result), 0.0, report);
   }
-  Image exemplar = prepareExemplar(args, report);
+  Image exemplar = prepareExemplar(args, writeOptionsKeeping(exemplarInfo), report);
 
   auto start = std::chrono::steady_clock::now();
   Image result;
@@ -172,15 +173,14 @@ void runImage(const CLI::App& parser, const ImageArgs& args, const GlobalOptions
     result = synthesizeTileBlend(exemplar, options, window.x, window.y, window.width, window.height);
   }
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  finish(args, globals, window, std::move(result), seconds, report);
+  finish(args, globals, exemplarInfo, window, std::move(result), seconds, report);
 }
 
 // Writes the result and reports it.
-void finish(const ImageArgs& args, const GlobalOptions& globals, const Window& window, Image result, double seconds,
-            json& report) {
+void finish(const ImageArgs& args, const GlobalOptions& globals, const ImageFileInfo& exemplarInfo,
+            const Window& window, Image result, double seconds, json& report) {
   // Keeps the exemplar's precision where the format can: a 16-bit input gives a 16-bit PNG, an
   // 8-bit one a half-float EXR; other formats store 8 bits, which the user is told.
-  const ImageFileInfo exemplarInfo = readImageInfo(args.exemplar);
   writeImage(args.output, result, writeOptionsKeeping(exemplarInfo));
   const std::string ext = fileExtension(args.output);
   if (exemplarInfo.bitsPerChannel > 8 && ext != "png" && ext != "exr")
