@@ -10,7 +10,7 @@ PACKAGES=(
   # libraries
   libeigen3-dev libtbb-dev libstb-dev libopenexr-dev libimath-dev zlib1g-dev libjpeg62-turbo-dev
   libnanoflann-dev libfaiss-dev libcgal-dev libopenvdb-dev libboost-iostreams-dev libblosc-dev libtinygltf-dev
-  libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
+  libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev libglpk-dev libzfp-dev
   # real data: exemplars, meshes, malformed models; a peer synthesizer for comparisons
   gimp-data libcgal-demo assimp-testmodels gmic
 )
