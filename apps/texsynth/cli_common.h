@@ -99,5 +99,6 @@ Command registerInfoCommand(CLI::App& app, const GlobalOptions& globals);
 Command registerImageCommand(CLI::App& app, const GlobalOptions& globals);
 Command registerSolidCommand(CLI::App& app, const GlobalOptions& globals);
 Command registerFieldCommand(CLI::App& app, const GlobalOptions& globals);
+Command registerVectorizeCommand(CLI::App& app, const GlobalOptions& globals);
 
 }  // namespace texsynth::cli

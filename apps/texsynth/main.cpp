@@ -25,7 +25,7 @@ int main(int argc, char** argv) {
       cli::registerDemoCommand(app, globals),   cli::registerEvalCommand(app, globals),
       cli::registerRenderCommand(app, globals), cli::registerInfoCommand(app, globals),
       cli::registerImageCommand(app, globals),  cli::registerSolidCommand(app, globals),
-      cli::registerFieldCommand(app, globals),
+      cli::registerFieldCommand(app, globals),  cli::registerVectorizeCommand(app, globals),
   };
   // Global flags may also follow the subcommand name.
   for (auto& command : commands) {

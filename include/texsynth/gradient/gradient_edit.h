@@ -25,9 +25,9 @@ struct EditStroke {
 
 struct EditOptions {
   Vec3f color = Vec3f(1.0f, 0.0f, 1.0f);  // reference colour, [0,1]
-  int centres = 24;                        // m, RBF centres drawn from the stroke voxels
-  float alpha = 1e-4f;                     // paper: 1e-4 (colours on the 0..255 scale)
-  float beta = 0.1f;                       // paper: 0.1 (positions in voxels)
+  int centres = 24;                       // m, RBF centres drawn from the stroke voxels
+  float alpha = 1e-4f;                    // paper: 1e-4 (colours on the 0..255 scale)
+  float beta = 0.1f;                      // paper: 0.1 (positions in voxels)
   std::uint64_t seed = 1;
 };
 
@@ -43,8 +43,7 @@ struct EditReport {
 std::vector<EditStroke> readEditStrokes(const std::string& path);
 
 // Edits `solid` in place. Throws ParameterError("strokes" | "color" | "centres" | ...) for bad input.
-EditReport editGradientSolid(GradientSolid& solid, const std::vector<EditStroke>& strokes,
-                             const EditOptions& options);
+EditReport editGradientSolid(GradientSolid& solid, const std::vector<EditStroke>& strokes, const EditOptions& options);
 
 // The same edit applied voxel by voxel to a raster volume (the baseline the paper compares with).
 EditReport editVolume(Volume& volume, const std::vector<EditStroke>& strokes, const EditOptions& options);
