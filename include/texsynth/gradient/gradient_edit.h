@@ -7,7 +7,9 @@
 // from the strokes' strengths. Each control point's colour moves towards the reference by h, and its
 // gradients follow in closed form (eqs. 5-6), so the edit costs one pass over the control points.
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "texsynth/core/math.h"
@@ -34,13 +36,24 @@ struct EditOptions {
 struct EditReport {
   int strokeVoxels = 0;
   int centres = 0;
+  int lpRows = 0;               // stroke voxels the linear program fitted (a subsample when there are many)
+  std::vector<double> weights;  // omega_k >= 0, one per centre
   double lpSeconds = 0;
   double updateSeconds = 0;
   double strengthDeviation = 0;  // mean |h - strength| over stroke voxels
 };
 
+// A stroke file's content: the strokes and, when the file gives one, the reference colour.
+struct EditStrokeFile {
+  std::vector<EditStroke> strokes;
+  std::optional<Vec3f> color;
+};
+
 // Stroke files: JSON, see docs/stroke-format.md. Throws InputError naming the file (and JSON path).
 std::vector<EditStroke> readEditStrokes(const std::string& path);
+EditStrokeFile readEditStrokeFile(const std::string& path);
+// The same from JSON text; `source` names it in errors.
+EditStrokeFile parseEditStrokes(std::string_view json, const std::string& source);
 
 // Edits `solid` in place. Throws ParameterError("strokes" | "color" | "centres" | ...) for bad input.
 EditReport editGradientSolid(GradientSolid& solid, const std::vector<EditStroke>& strokes, const EditOptions& options);
