@@ -100,5 +100,6 @@ Command registerImageCommand(CLI::App& app, const GlobalOptions& globals);
 Command registerSolidCommand(CLI::App& app, const GlobalOptions& globals);
 Command registerFieldCommand(CLI::App& app, const GlobalOptions& globals);
 Command registerVectorizeCommand(CLI::App& app, const GlobalOptions& globals);
+Command registerEditCommand(CLI::App& app, const GlobalOptions& globals);
 
 }  // namespace texsynth::cli
