@@ -69,9 +69,9 @@ Command registerEditCommand(CLI::App& app, const GlobalOptions& globals) {
       ->capture_default_str()
       ->check(finiteIn(0, 1e6));
   outputFiles(sub->add_option("--stats", args->stats, "Write the report (times, weights) as JSON here"));
-  const ParameterSources sources = {{"strokes", fromFile(args->strokes)},   {"solid", fromFile(args->input)},
-                                    {"color", fromFlag("--color")},         {"centres", fromFlag("--centres")},
-                                    {"alpha", fromFlag("--alpha")},         {"beta", fromFlag("--beta")}};
+  const ParameterSources sources = {{"strokes", fromFile(args->strokes)}, {"solid", fromFile(args->input)},
+                                    {"color", fromFlag("--color")},       {"centres", fromFlag("--centres")},
+                                    {"alpha", fromFlag("--alpha")},       {"beta", fromFlag("--beta")}};
   return {sub,
           [args, &globals] {
             for (const std::string* file : {&args->input, &args->output})
@@ -82,7 +82,8 @@ Command registerEditCommand(CLI::App& app, const GlobalOptions& globals) {
             if (!args->color.empty()) color = parseColor(args->color);
             const EditStrokeFile strokes = readEditStrokeFile(args->strokes);
             if (!color) color = strokes.color;
-            if (!color) throw ParameterError("--color", "give the reference colour (--color or \"color\" in the strokes)");
+            if (!color)
+              throw ParameterError("--color", "give the reference colour (--color or \"color\" in the strokes)");
             GradientSolid solid = readGradientSolid(args->input);
             EditOptions options;
             options.color = *color;

@@ -73,31 +73,31 @@ Command registerVectorizeCommand(CLI::App& app, const GlobalOptions& globals) {
             writeGradientSolid(args->output, solid);
 
             const double bytes = double(gradientSolidFileBytes(solid)), raw = double(rawVolumeBytes(solid));
-            nlohmann::json out = {
-                {"input", args->volume},
-                {"output", args->output},
-                {"voxels", {solid.voxels.x(), solid.voxels.y(), solid.voxels.z()}},
-                {"controls", {solid.controls.x(), solid.controls.y(), solid.controls.z()}},
-                {"spacing", solid.spacing},
-                {"channels", solid.channels},
-                {"regions", solid.hasRegions()},
-                {"boundary_controls", report.boundaryControls},
-                {"detail", solid.hasDetail()},
-                {"optimize", args->optimize},
-                {"rms_error_255", report.rms},
-                {"fit_seconds", report.fitSeconds},
-                {"optimize_seconds", report.optimizeSeconds},
-                {"total_seconds", report.totalSeconds},
-                {"file_bytes", bytes},
-                {"raw_volume_bytes", raw},
-                {"percent_of_raw", 100.0 * bytes / raw}};
+            nlohmann::json out = {{"input", args->volume},
+                                  {"output", args->output},
+                                  {"voxels", {solid.voxels.x(), solid.voxels.y(), solid.voxels.z()}},
+                                  {"controls", {solid.controls.x(), solid.controls.y(), solid.controls.z()}},
+                                  {"spacing", solid.spacing},
+                                  {"channels", solid.channels},
+                                  {"regions", solid.hasRegions()},
+                                  {"boundary_controls", report.boundaryControls},
+                                  {"detail", solid.hasDetail()},
+                                  {"optimize", args->optimize},
+                                  {"rms_error_255", report.rms},
+                                  {"fit_seconds", report.fitSeconds},
+                                  {"optimize_seconds", report.optimizeSeconds},
+                                  {"total_seconds", report.totalSeconds},
+                                  {"file_bytes", bytes},
+                                  {"raw_volume_bytes", raw},
+                                  {"percent_of_raw", 100.0 * bytes / raw}};
             if (!args->stats.empty()) writeFileAtomically(args->stats, out.dump(2) + "\n");
             if (globals.json) {
               printJson(out);
               return;
             }
             char line[256];
-            std::snprintf(line, sizeof line, "wrote %s: RMS error %.2f (0..255), %.2f s, %.0f bytes = %.1f%% of the raw volume",
+            std::snprintf(line, sizeof line,
+                          "wrote %s: RMS error %.2f (0..255), %.2f s, %.0f bytes = %.1f%% of the raw volume",
                           args->output.c_str(), report.rms, report.totalSeconds, bytes, 100.0 * bytes / raw);
             say(globals, line);
           },

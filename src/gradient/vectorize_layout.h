@@ -28,11 +28,10 @@ struct ControlGrid {
   }
   // Voxels [begin, end) nearest to control i along `axis` (eq. 2's buckets); a control past the last
   // voxel takes the last one, so every control point has samples.
-  int ownedBegin(int axis, int i) const {
-    return std::min(std::max(0, i * spacing - spacing / 2), voxels[axis] - 1);
-  }
+  int ownedBegin(int axis, int i) const { return std::min(std::max(0, i * spacing - spacing / 2), voxels[axis] - 1); }
   int ownedEnd(int axis, int i) const {
-    const int end = i == controls[axis] - 1 ? voxels[axis] : std::min(voxels[axis], i * spacing - spacing / 2 + spacing);
+    const int end =
+        i == controls[axis] - 1 ? voxels[axis] : std::min(voxels[axis], i * spacing - spacing / 2 + spacing);
     return std::max(end, ownedBegin(axis, i) + 1);
   }
 };
@@ -44,7 +43,7 @@ enum class CubeSides : std::uint8_t { Positive, Negative, Both };
 struct FitLayout {
   ControlGrid grid;
   int channels = 3;
-  std::vector<CubeSides> cubeSides;               // empty: every cube Positive (one region)
+  std::vector<CubeSides> cubeSides;                          // empty: every cube Positive (one region)
   const std::vector<std::int32_t>* negativeIndex = nullptr;  // null without regions
   std::int64_t negatives = 0;
 
@@ -55,7 +54,9 @@ struct FitLayout {
     const std::int32_t index = (*negativeIndex)[std::size_t(control)];
     return index < 0 ? control : grid.controlCount() + index;
   }
-  CubeSides sides(std::int64_t cube) const { return cubeSides.empty() ? CubeSides::Positive : cubeSides[std::size_t(cube)]; }
+  CubeSides sides(std::int64_t cube) const {
+    return cubeSides.empty() ? CubeSides::Positive : cubeSides[std::size_t(cube)];
+  }
 };
 
 // Target values of the samples: the voxels themselves, and with regions each side's values carried

@@ -17,7 +17,7 @@ using Matrix32 = Eigen::Matrix<float, 32, 32>;
 // The Hermite functions of one axis at the samples of each cube, and their Gram matrix.
 struct AxisSamples {
   std::vector<std::vector<std::array<float, 4>>> basis;  // per cube, per voxel
-  std::vector<Eigen::Matrix4d> gram;                    // per cube
+  std::vector<Eigen::Matrix4d> gram;                     // per cube
 };
 
 AxisSamples axisSamples(const ControlGrid& grid, int axis) {
@@ -114,12 +114,12 @@ class Refiner {
         const int k = pz + 2 * int(layer);
         for (int j = py; j < grid.cubes(1); j += 2)
           for (int i = px; i < grid.cubes(0); i += 2) {
-            const int pattern = (i == grid.cubes(0) - 1 ? 1 : 0) | (j == grid.cubes(1) - 1 ? 2 : 0) |
-                                (k == grid.cubes(2) - 1 ? 4 : 0);
+            const int pattern =
+                (i == grid.cubes(0) - 1 ? 1 : 0) | (j == grid.cubes(1) - 1 ? 2 : 0) | (k == grid.cubes(2) - 1 ? 4 : 0);
             const CubeSides sides = layout_.sides(grid.cubeIndex(i, j, k));
             for (int sign : {1, -1}) {
-              if ((sign > 0 && sides == CubeSides::Negative) || (sign < 0 && sides != CubeSides::Negative &&
-                                                                  sides != CubeSides::Both))
+              if ((sign > 0 && sides == CubeSides::Negative) ||
+                  (sign < 0 && sides != CubeSides::Negative && sides != CubeSides::Both))
                 continue;
               std::int64_t slots[8];
               for (int c = 0; c < 8; ++c)
@@ -152,14 +152,16 @@ class Refiner {
           }
       for (int w = 0; w < 32; ++w)
         for (int c = 0; c < channels; ++c)
-          b[(std::size_t(slots[w / 4]) * 4 + std::size_t(w % 4)) * channels + std::size_t(c)] += local[w * channels + c];
+          b[(std::size_t(slots[w / 4]) * 4 + std::size_t(w % 4)) * channels + std::size_t(c)] +=
+              local[w * channels + c];
     });
   }
 
   // out = K in, K = sum over cubes and sides of S^T (W^T W) S.
   void apply(const std::vector<float>& in, std::vector<float>& out) const {
     const int channels = Channels ? Channels : layout_.channels;
-    using Block = Eigen::Matrix<float, 32, Channels ? Channels : Eigen::Dynamic, Channels == 1 ? Eigen::ColMajor : Eigen::RowMajor, 32, Channels ? Channels : 4>;
+    using Block = Eigen::Matrix<float, 32, Channels ? Channels : Eigen::Dynamic,
+                                Channels == 1 ? Eigen::ColMajor : Eigen::RowMajor, 32, Channels ? Channels : 4>;
     std::fill(out.begin(), out.end(), 0.0f);
     forEachCubeLayer([&](const std::int64_t* slots, int pattern, int, int, int, int) {
       Block gathered(32, channels), product(32, channels);
@@ -185,7 +187,8 @@ class Refiner {
     std::vector<double> partial(chunks * channels, 0.0);
     parallelFor(0, std::int64_t(chunks), [&](std::int64_t index) {
       const std::size_t begin = std::size_t(index) * chunk, end = std::min(a.size(), begin + chunk);
-      for (std::size_t n = begin; n < end; ++n) partial[std::size_t(index) * channels + n % channels] += double(a[n]) * b[n];
+      for (std::size_t n = begin; n < end; ++n)
+        partial[std::size_t(index) * channels + n % channels] += double(a[n]) * b[n];
     });
     std::vector<double> sum(channels, 0.0);
     for (std::size_t n = 0; n < partial.size(); ++n) sum[n % channels] += partial[n];

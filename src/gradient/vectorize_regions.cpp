@@ -9,7 +9,9 @@
 namespace texsynth::vectorize_detail {
 namespace {
 
-bool insideMask(const Volume& mask, std::size_t voxel) { return mask.voxels[voxel] > 0.5f; }
+bool insideMask(const Volume& mask, std::size_t voxel) {
+  return mask.voxels[voxel] > 0.5f;
+}
 
 // Which sides each cube's closed lattice of voxels (its far faces included) touches.
 std::vector<CubeSides> cubeSidesOf(const ControlGrid& grid, const Volume& mask) {
@@ -26,8 +28,9 @@ std::vector<CubeSides> cubeSidesOf(const ControlGrid& grid, const Volume& mask) 
           for (int y = begin[1]; y < end[1]; ++y)
             for (int x = begin[0]; x < end[0]; ++x)
               (insideMask(mask, mask.index(x, y, z)) ? positive : negative) = true;
-        sides[std::size_t(grid.cubeIndex(i, j, int(k)))] =
-            positive && negative ? CubeSides::Both : positive ? CubeSides::Positive : CubeSides::Negative;
+        sides[std::size_t(grid.cubeIndex(i, j, int(k)))] = positive && negative ? CubeSides::Both
+                                                           : positive           ? CubeSides::Positive
+                                                                                : CubeSides::Negative;
       }
   });
   return sides;

@@ -9,11 +9,11 @@
 namespace texsynth::vectorize_detail {
 
 struct Regions {
-  Volume signedDistance;                     // voxels, positive inside the mask, clamped
-  std::vector<CubeSides> cubeSides;          // per cube
-  std::vector<std::int32_t> negativeIndex;   // per control: its negative set, or -1
+  Volume signedDistance;                    // voxels, positive inside the mask, clamped
+  std::vector<CubeSides> cubeSides;         // per cube
+  std::vector<std::int32_t> negativeIndex;  // per control: its negative set, or -1
   std::int64_t negatives = 0;
-  Volume positive, negative;                 // each side's values carried across the boundary
+  Volume positive, negative;  // each side's values carried across the boundary
 };
 
 // The cubes the mask's boundary crosses, their corners' second sets, and the dilated targets.

@@ -1,11 +1,12 @@
 // The representation: corner reproduction, polynomial exactness, C1 continuity, the weight table,
 // regions, and the SolidTexture adapter.
+#include "texsynth/gradient/gradient_solid.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "texsynth/core/random.h"
-#include "texsynth/gradient/gradient_solid.h"
 #include "texsynth/gradient/gradient_solid_texture.h"
 #include "texsynth/gradient/tricubic_basis.h"
 

@@ -1,4 +1,6 @@
 // Vectorization: the signed distance, first-order and optimized fits, regions, detail, determinism.
+#include "texsynth/gradient/vectorize.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,7 +9,6 @@
 #include "texsynth/core/parallel.h"
 #include "texsynth/core/random.h"
 #include "texsynth/gradient/tricubic_basis.h"
-#include "texsynth/gradient/vectorize.h"
 
 namespace texsynth {
 namespace {
@@ -105,7 +106,8 @@ TEST(Vectorize, SeparatesRegionsAlongTheMask) {
   for (int z = 0; z < 40; ++z)
     for (int y = 0; y < 40; ++y)
       for (int x = 0; x < 40; ++x, ++total)
-        agree += (evaluateGradientDistance(solid, Vec3f(float(x), float(y), float(z))) > 0) == (mask.at(x, y, z, 0) > 0.5f);
+        agree +=
+            (evaluateGradientDistance(solid, Vec3f(float(x), float(y), float(z))) > 0) == (mask.at(x, y, z, 0) > 0.5f);
   EXPECT_GT(double(agree) / total, 0.995);
 }
 
