@@ -1,9 +1,11 @@
 // Writes small valid inputs for every fuzz target with the project's own writers, so each
-// corpus starts from files the readers accept: make_seeds DIR fills DIR/{image,mesh,volume,field}/.
+// corpus starts from files the readers accept: make_seeds DIR fills
+// DIR/{image,mesh,volume,field,gradient_solid}/.
 #include <filesystem>
 #include <iostream>
 
 #include "texsynth/field/field_io.h"
+#include "texsynth/gradient/gradient_solid_file.h"
 #include "texsynth/io/image_io.h"
 #include "texsynth/io/mesh_io.h"
 #include "texsynth/io/volume_io.h"
@@ -58,6 +60,29 @@ void writeFields(const std::string& dir) {
   }
 }
 
+// Small solids (2 x 2 x 3 control points) with every combination of regions and detail.
+void writeGradientSolids(const std::string& dir) {
+  for (bool regions : {false, true})
+    for (bool detail : {false, true}) {
+      GradientSolid solid = GradientSolid::zeros({3, 2, 6}, 2);
+      for (std::size_t i = 0; i < solid.positive.size(); ++i) solid.positive[i] = ramp(i) - 0.2f;
+      const auto n = std::size_t(solid.controlCount());
+      if (regions) {
+        solid.distance.resize(4 * n);
+        for (std::size_t i = 0; i < solid.distance.size(); ++i) solid.distance[i] = 4 * ramp(i + 5) - 2;
+        solid.negativeIndex.assign(n, -1);
+        solid.negativeIndex[1] = 0, solid.negativeIndex[4] = 1;
+        solid.negative.resize(2 * std::size_t(solid.setSize()));
+        for (std::size_t i = 0; i < solid.negative.size(); ++i) solid.negative[i] = ramp(i + 9);
+      }
+      if (detail) {
+        solid.detail.resize(solid.positive.size());
+        for (std::size_t i = 0; i < solid.detail.size(); ++i) solid.detail[i] = 0.1f * ramp(i + 3);
+      }
+      writeGradientSolid(dir + "/" + (regions ? "regions" : "plain") + (detail ? "-detail" : "") + ".tsgs", solid);
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -66,11 +91,12 @@ int main(int argc, char** argv) {
     return 2;
   }
   const std::string root = argv[1];
-  for (const char* family : {"image", "mesh", "volume", "field"})
+  for (const char* family : {"image", "mesh", "volume", "field", "gradient_solid"})
     std::filesystem::create_directories(root + "/" + family);
   writeImages(root + "/image");
   writeMeshes(root + "/mesh");
   writeVolumes(root + "/volume");
   writeFields(root + "/field");
+  writeGradientSolids(root + "/gradient_solid");
   return 0;
 }

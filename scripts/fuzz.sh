@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Fuzzes the file loaders with libFuzzer (docs/fuzzing.md).
-#   scripts/fuzz.sh [SECONDS_PER_TARGET] [TARGET...]     targets: image mesh volume sketch field
+#   scripts/fuzz.sh [SECONDS_PER_TARGET] [TARGET...]     targets: image mesh volume sketch field gradient_solid
 # Installs clang and libFuzzer, builds build-fuzz/ (clang, address + undefined sanitizers),
 # seeds each corpus from Debian's test files and the project's own writers, runs each target
 # for SECONDS_PER_TARGET (default 60), JOBS at a time (default 1), and prints per target the
@@ -12,7 +12,7 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 seconds=${1:-60}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(image mesh volume sketch field)
+[ ${#targets[@]} -gt 0 ] || targets=(image mesh volume sketch field gradient_solid)
 jobs=${JOBS:-1}
 
 bash scripts/install-deps.sh clang libclang-rt-14-dev

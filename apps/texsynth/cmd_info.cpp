@@ -1,9 +1,10 @@
-// texsynth info FILE: what an image, mesh, volume or rotation-field file holds.
+// texsynth info FILE: what an image, mesh, volume, rotation-field or gradient-solid file holds.
 #include <algorithm>
 #include <cstdio>
 
 #include "cli_common.h"
 #include "texsynth/field/field_io.h"
+#include "texsynth/gradient/gradient_solid_file.h"
 #include "texsynth/io/file_kind.h"
 #include "texsynth/io/image_io.h"
 #include "texsynth/io/mesh_io.h"
@@ -78,6 +79,38 @@ static json describeField(const std::string& path) {
           {"rotation_from_identity_degrees", {{"mean", nodes > 0 ? sum / nodes : 0.0}, {"max", largest}}}};
 }
 
+// Per channel, the range of the control points' values over both regions' feature sets.
+static json valueRanges(const GradientSolid& solid) {
+  json ranges = json::array();
+  for (int c = 0; c < solid.channels; ++c) {
+    double lo = 1e30, hi = -1e30;
+    for (const std::vector<float>* sets : {&solid.positive, &solid.negative})
+      for (std::size_t i = std::size_t(c); i < sets->size(); i += std::size_t(solid.setSize()))
+        lo = std::min(lo, double((*sets)[i])), hi = std::max(hi, double((*sets)[i]));
+    ranges.push_back({{"min", lo}, {"max", hi}});
+  }
+  return ranges;
+}
+
+static json describeGradientSolid(const std::string& path) {
+  const GradientSolid solid = readGradientSolid(path);
+  std::int64_t boundary = 0;
+  for (std::int32_t index : solid.negativeIndex) boundary += index >= 0;
+  const std::uint64_t fileBytes = gradientSolidFileBytes(solid), rawBytes = rawVolumeBytes(solid);
+  return {{"kind", "gradient solid"},
+          {"voxels", {solid.voxels.x(), solid.voxels.y(), solid.voxels.z()}},
+          {"controls", {solid.controls.x(), solid.controls.y(), solid.controls.z()}},
+          {"spacing", solid.spacing},
+          {"channels", solid.channels},
+          {"regions", solid.hasRegions()},
+          {"boundary_controls", boundary},
+          {"detail", solid.hasDetail()},
+          {"file_bytes", fileBytes},
+          {"raw_volume_bytes", rawBytes},
+          {"percent_of_raw", 100.0 * double(fileBytes) / double(rawBytes)},
+          {"value_ranges", valueRanges(solid)}};
+}
+
 static void printHuman(const std::string& path, const json& d) {
   std::printf("%s: %s\n", path.c_str(), d["kind"].get<std::string>().c_str());
   for (auto& [key, value] : d.items())
@@ -85,11 +118,13 @@ static void printHuman(const std::string& path, const json& d) {
 }
 
 Command registerInfoCommand(CLI::App& app, const GlobalOptions& globals) {
-  auto* sub = app.add_subcommand("info", "Print what an image, mesh, volume or rotation-field file holds");
+  auto* sub =
+      app.add_subcommand("info", "Print what an image, mesh, volume, rotation-field or gradient-solid file holds");
   auto path = std::make_shared<std::string>();
   sub->add_option("FILE", *path,
                   "Image (" + readableImageExtensions() + "), mesh (" + readableMeshExtensions() + "), volume (" +
-                      readableVolumeExtensions() + ") or rotation field (" + readableFieldExtensions() + ")")
+                      readableVolumeExtensions() + "), rotation field (" + readableFieldExtensions() +
+                      ") or gradient solid (" + readableGradientSolidExtensions() + ")")
       ->required();
   return {sub,
           [path, &globals] {
@@ -107,11 +142,15 @@ Command registerInfoCommand(CLI::App& app, const GlobalOptions& globals) {
               case FileKind::Field:
                 d = describeField(*path);
                 break;
+              case FileKind::GradientSolid:
+                d = describeGradientSolid(*path);
+                break;
               case FileKind::Unknown:
                 throw InputError(*path, "unknown file type; texsynth reads images (" + readableImageExtensions() +
                                             "), meshes (" + readableMeshExtensions() + "), volumes (" +
-                                            readableVolumeExtensions() + ") and rotation fields (" +
-                                            readableFieldExtensions() + ")");
+                                            readableVolumeExtensions() + "), rotation fields (" +
+                                            readableFieldExtensions() + ") and gradient solids (" +
+                                            readableGradientSolidExtensions() + ")");
             }
             d["file"] = *path;
             if (globals.json)

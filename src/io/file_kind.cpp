@@ -12,6 +12,7 @@ static constexpr std::array<std::string_view, 7> kImage = {"png", "jpg", "jpeg",
 static constexpr std::array<std::string_view, 4> kMesh = {"obj", "ply", "off", "stl"};
 static constexpr std::array<std::string_view, 1> kVolume = {"nrrd"};
 static constexpr std::array<std::string_view, 1> kField = {"tsfield"};
+static constexpr std::array<std::string_view, 1> kGradientSolid = {"tsgs"};
 
 template <std::size_t N>
 static bool contains(const std::array<std::string_view, N>& list, const std::string& ext) {
@@ -31,6 +32,7 @@ FileKind fileKind(const std::string& path) {
   if (contains(kMesh, ext)) return FileKind::Mesh;
   if (contains(kVolume, ext)) return FileKind::Volume;
   if (contains(kField, ext)) return FileKind::Field;
+  if (contains(kGradientSolid, ext)) return FileKind::GradientSolid;
   return FileKind::Unknown;
 }
 
@@ -45,6 +47,9 @@ std::string readableVolumeExtensions() {
 }
 std::string readableFieldExtensions() {
   return join(kField);
+}
+std::string readableGradientSolidExtensions() {
+  return join(kGradientSolid);
 }
 
 }  // namespace texsynth

@@ -4,7 +4,7 @@
 
 namespace texsynth {
 
-enum class FileKind { Image, Mesh, Volume, Field, Unknown };
+enum class FileKind { Image, Mesh, Volume, Field, GradientSolid, Unknown };
 
 FileKind fileKind(const std::string& path);
 // Human-readable lists of the extensions texsynth reads, for error messages and --help.
@@ -12,5 +12,6 @@ std::string readableImageExtensions();
 std::string readableMeshExtensions();
 std::string readableVolumeExtensions();
 std::string readableFieldExtensions();
+std::string readableGradientSolidExtensions();
 
 }  // namespace texsynth
