@@ -386,9 +386,9 @@ Command registerSolidCommand(CLI::App& app, const GlobalOptions& globals) {
       "solid",
       "Synthesize a solid (3D) texture and write it on a mesh, as slices or as a volume. Random access: any point is "
       "computed alone, so a mesh surface costs only its points.\n"
-      "  tile-deform: tile the exemplar and deform a 3D grid with Perlin noise (Chen et al.). A .nrrd exemplar is "
-      "tiled in 3D (method 1); a 2D exemplar is stacked along x, y or z, or along all three and blended by the "
-      "surface normal, w_i = (n.i)^(2p) (method 2).\n"
+      "  tile-deform: tile the exemplar and deform a 3D grid with Perlin noise (Chen et al.). A volume exemplar "
+      "(.nrrd .vdb) is tiled in 3D (method 1); a 2D exemplar is stacked along x, y or z, or along all three and "
+      "blended by the surface normal, w_i = (n.i)^(2p) (method 2).\n"
       "  tile-blend: triplanar histogram-preserving tiling and blending (Heitz & Neyret 2018) of a 2D exemplar.\n"
       "  lazy: deterministic on-demand synthesis of coordinate triples (sketch-guided solid texturing), optionally "
       "following a rotation --field; only the voxels the outputs need are synthesized.\n"
@@ -398,7 +398,7 @@ Command registerSolidCommand(CLI::App& app, const GlobalOptions& globals) {
   auto args = std::make_shared<SolidArgs>();
   inputFiles(sub->add_option(
                  "EXEMPLAR", args->exemplars,
-                 "2D exemplar image, or a 3D exemplar volume (.nrrd); lazy also takes three: XY YZ ZX (the planes' "
+                 "2D exemplar image, or a 3D exemplar volume (.nrrd .vdb); lazy also takes three: XY YZ ZX (the planes' "
                  "exemplars). A gradient solid (.tsgs, from `texsynth vectorize`) is shown as it is, spanning the "
                  "mesh's box (or the unit cube)"))
       ->required()

@@ -10,7 +10,7 @@ namespace texsynth {
 
 static constexpr std::array<std::string_view, 7> kImage = {"png", "jpg", "jpeg", "bmp", "tga", "exr", "pat"};
 static constexpr std::array<std::string_view, 4> kMesh = {"obj", "ply", "off", "stl"};
-static constexpr std::array<std::string_view, 1> kVolume = {"nrrd"};
+static constexpr std::array<std::string_view, 2> kVolume = {"nrrd", "vdb"};
 static constexpr std::array<std::string_view, 1> kField = {"tsfield"};
 static constexpr std::array<std::string_view, 1> kGradientSolid = {"tsgs"};
 

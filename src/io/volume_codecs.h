@@ -18,6 +18,12 @@ void writeNrrd(const std::string& filePath, const std::string& path, const Volum
 
 // OpenVDB file contents: "density" (+ "color") grids; `path` names errors.
 std::string encodeVdb(const std::string& path, const Volume& volume);
+// A volume from OpenVDB file contents (the rule is in volume_io.h); `path` names errors.
+Volume decodeVdb(const std::string& path, std::string bytes);
+// openvdb::initialize() once per process (it registers the grid types).
+void initializeOpenVdb();
+// Grid metadata (Vec3i) holding the volume's size, so zero borders survive a round trip.
+inline constexpr const char* kVdbSizeMetadata = "texsynth_size";
 
 // gzip/zlib inflate of `compressed` into exactly `expectedBytes` bytes; throws
 // InputError(path, ...) if the stream is corrupt or ends early.

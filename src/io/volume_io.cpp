@@ -13,9 +13,11 @@ Volume readVolume(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw InputError(path, "file does not exist");
   std::string ext = fileExtension(path);
-  if (ext != "nrrd") throw InputError(path, "unsupported volume format '." + ext + "' (readable: .nrrd)");
+  if (ext != "nrrd" && ext != "vdb")
+    throw InputError(path, "unsupported volume format '." + ext + "' (readable: .nrrd .vdb)");
   std::string bytes = readFileBytes(path);
   if (bytes.empty()) throw InputError(path, "file is empty");
+  if (ext == "vdb") return volume_codec::decodeVdb(path, std::move(bytes));
   return volume_codec::decodeNrrd(path, bytes);
 }
 

@@ -1,5 +1,6 @@
 // OpenVDB export for Blender/Houdini: a "density" FloatGrid and, for color volumes, a
-// "color" Vec3SGrid, both built from dense copies of the volume by openvdb::tools.
+// "color" Vec3SGrid, both built from dense copies of the volume by openvdb::tools and
+// tagged with the volume's size (kVdbSizeMetadata). The reader is volume_vdb_read.cpp.
 // Encoded in memory through io::Stream (which io::File reads back) because io::File
 // ignores write errors: a full disk would silently leave a truncated file.
 #include <openvdb/io/Stream.h>
@@ -15,12 +16,13 @@
 #include "volume_codecs.h"
 
 namespace texsynth::volume_codec {
-namespace {
 
 void initializeOpenVdb() {
   static std::once_flag once;
   std::call_once(once, [] { openvdb::initialize(); });
 }
+
+namespace {
 
 // Voxel size 1/maxDim, shifted half a voxel so voxel (x,y,z) covers
 // [x, x+1] / maxDim: the whole volume spans [0,1] along its longest axis.
@@ -41,6 +43,8 @@ typename Grid::Ptr gridFromDense(const Volume& volume, std::vector<typename Grid
   openvdb::tools::copyFromDense(dense, *grid, openvdb::zeroVal<Value>(), /*serial=*/false);
   grid->setName(name);
   grid->setTransform(unitBoxTransform(volume));
+  // Zero voxels stay inactive, so the active box alone would lose black borders.
+  grid->insertMeta(kVdbSizeMetadata, openvdb::Vec3IMetadata(openvdb::Vec3i(volume.nx, volume.ny, volume.nz)));
   return grid;
 }
 

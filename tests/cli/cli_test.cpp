@@ -71,6 +71,25 @@ TEST(Cli, InfoDescribesImageAsJson) {
   EXPECT_NE(r.out.find("\"height\": 30"), std::string::npos) << r.out;
 }
 
+TEST(Cli, InfoReadsOpenVdbVolumes) {
+  test::TempDir dir;
+  Volume volume(5, 4, 3, 3);  // all black but one voxel: the size still comes back
+  volume.at(2, 1, 1, 0) = 1.0f;
+  writeVolume(dir.file("v.vdb"), volume);
+  RunResult r = runTexsynth("info " + dir.file("v.vdb") + " --json", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  auto described = nlohmann::json::parse(r.out);
+  EXPECT_EQ(described["kind"], "volume");
+  EXPECT_EQ(described["size"], nlohmann::json::array({5, 4, 3}));
+  EXPECT_EQ(described["channels"], 3);
+
+  test::writeBytes(dir.file("bad.vdb"), "not a vdb");
+  r = runTexsynth("info " + dir.file("bad.vdb"), dir);
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("not a readable OpenVDB file"), std::string::npos) << r.err;
+}
+
 TEST(Cli, EvalOfExemplarAgainstItselfIsPerfect) {
   test::TempDir dir;
   writeImage(dir.file("ex.png"), test::makeTestPattern(48, 48));

@@ -1,5 +1,6 @@
 // Volume I/O: NRRD round trips (raw/gzip, float/uint8), hand-made NRRDs of other types and
-// byte orders, malformed and truncated files, OpenVDB export re-opened with OpenVDB.
+// byte orders, malformed and truncated files, OpenVDB export re-opened with OpenVDB
+// (reading .vdb: volume_vdb_read_test.cpp).
 #include "texsynth/io/volume_io.h"
 
 #include <gtest/gtest.h>
@@ -176,8 +177,8 @@ TEST(VolumeIo, MalformedNrrdsAreInputErrors) {
   expectReadError(write("badgz.nrrd", okGzip + "\nnot gzip at all"), "corrupt gzip");
   expectReadError(write("shortgz.nrrd", okGzip + "\n" + gzipOf("1234")), "gzip data holds only 4 of the 8 bytes");
 
-  test::writeBytes(dir.file("v.vdb"), "whatever");
-  expectReadError(dir.file("v.vdb"), ".nrrd");
+  test::writeBytes(dir.file("v.raw"), "whatever");
+  expectReadError(dir.file("v.raw"), "(readable: .nrrd .vdb)");
 }
 
 // Headers that contradict themselves or their data used to be read anyway (issue 13).

@@ -1,6 +1,6 @@
 #pragma once
-// Volume files: read and write NRRD (attached data, raw or gzip, any endianness); write
-// OpenVDB for Blender/Houdini.
+// Volume files: read and write NRRD (attached data, raw or gzip, any endianness) and OpenVDB
+// (for Blender/Houdini).
 //
 // NRRD layout: dimension 3 (sizes X Y Z) holds a scalar volume; dimension 4 with the channel
 // axis first (sizes C X Y Z) holds C interleaved channels, which is exactly Volume's layout.
@@ -21,6 +21,17 @@ namespace texsynth {
 // stream), an unknown or repeated header field, a per-axis field ('kinds', 'spacings' ...)
 // with the wrong number of axes, or a 'kinds' entry that does not fit its axis (RGB-color on
 // a 3-D scalar volume, a channel kind whose size is not the channel count).
+//
+// Reads a .vdb volume: a vec3s (or vec3d) grid named "color" gives 3 channels; else the float
+// (or double) grid "density", else the first float or double grid, gives 1 channel; other
+// grids are ignored, and a file without a fitting grid is an error listing the grids it holds.
+// Index coordinate (x,y,z) becomes voxel (x - x0, y - y0, z - z0); the transform is ignored.
+// The dense box, with corner (x0,y0,z0): from 0 to the size writeVolume records in the grid's
+// "texsynth_size" metadata when the active voxels lie inside it (so black borders survive a
+// round trip), else the active voxels' bounding box, widened to start at index 0 when its
+// corner is >= 0 on every axis.
+// Inactive voxels inside the box take the grid's background value. A corrupt or truncated
+// file, an empty grid or an absurd box (same limits as NRRD) is one InputError.
 Volume readVolume(const std::string& path);
 
 struct VolumeWriteOptions {
@@ -34,7 +45,8 @@ struct VolumeWriteOptions {
 //          channel 0; grid class fog volume) and, for 3+ channels, a Vec3SGrid "color"
 //          (channels 0..2). Voxel (x,y,z) is index coordinate (x,y,z); the voxel size is
 //          1/max(nx,ny,nz) with a half-voxel offset, so the volume spans [0,1] along its
-//          longest axis. Voxels equal to 0 stay inactive background. Blender loads these.
+//          longest axis. Voxels equal to 0 stay inactive background; each grid's vec3i
+//          metadata "texsynth_size" records nx ny nz for readVolume. Blender loads these.
 // Throws ParameterError for an unknown extension or an empty volume; OutputError if the file
 // cannot be written.
 void writeVolume(const std::string& path, const Volume& volume, const VolumeWriteOptions& options = {});
