@@ -1,5 +1,7 @@
 #include "cli_common.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -120,10 +122,24 @@ void printJson(const nlohmann::json& document) {
 }
 
 std::string defaultCacheDirectory() {
-  if (const char* dir = std::getenv("TEXSYNTH_CACHE"); dir && *dir) return dir;
-  if (const char* dir = std::getenv("XDG_CACHE_HOME"); dir && *dir) return std::string(dir) + "/texsynth";
-  if (const char* home = std::getenv("HOME"); home && *home) return std::string(home) + "/.cache/texsynth";
-  return (std::filesystem::temp_directory_path() / "texsynth-cache").string();
+  namespace fs = std::filesystem;
+  const auto variable = [](const char* name) -> std::string {
+    const char* value = std::getenv(name);
+    return value ? value : "";
+  };
+  // An empty variable counts as unset; TEXSYNTH_CACHE may be relative (to the working directory),
+  // a relative XDG_CACHE_HOME is ignored (XDG Base Directory spec), and so is a relative HOME.
+  if (std::string dir = variable("TEXSYNTH_CACHE"); !dir.empty()) {
+    std::error_code ec;
+    fs::path absolute = fs::absolute(dir, ec);
+    return ec ? dir : absolute.lexically_normal().string();
+  }
+  if (fs::path dir = variable("XDG_CACHE_HOME"); dir.is_absolute()) return (dir / "texsynth").string();
+  if (fs::path home = variable("HOME"); home.is_absolute()) return (home / ".cache" / "texsynth").string();
+  // Per user, so that one user's directory never blocks another's.
+  std::error_code ec;
+  fs::path temp = fs::temp_directory_path(ec);
+  return ((ec ? fs::path("/tmp") : temp) / ("texsynth-cache-" + std::to_string(geteuid()))).string();
 }
 
 namespace {

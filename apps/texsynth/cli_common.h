@@ -69,8 +69,10 @@ void addTileBlendOptions(CLI::App& sub, float& tileSize, float& blendExponent);
 // Prints a JSON document on stdout (for --json).
 void printJson(const nlohmann::json& document);
 
-// Where exemplar analyses are cached: $TEXSYNTH_CACHE, else $XDG_CACHE_HOME/texsynth,
-// else ~/.cache/texsynth, else a texsynth directory under the system temp directory.
+// The one cache directory (exemplar analyses, candidate triples): $TEXSYNTH_CACHE, else
+// $XDG_CACHE_HOME/texsynth, else $HOME/.cache/texsynth, else a per-user directory under the
+// system temp directory. Empty variables count as unset; relative XDG_CACHE_HOME and HOME are
+// ignored.
 std::string defaultCacheDirectory();
 
 // Per-request peak memory: the process's peak resident memory (MiB, Linux VmHWM) since the last
@@ -99,5 +101,7 @@ Command registerInfoCommand(CLI::App& app, const GlobalOptions& globals);
 Command registerImageCommand(CLI::App& app, const GlobalOptions& globals);
 Command registerSolidCommand(CLI::App& app, const GlobalOptions& globals);
 Command registerFieldCommand(CLI::App& app, const GlobalOptions& globals);
+Command registerVectorizeCommand(CLI::App& app, const GlobalOptions& globals);
+Command registerEditCommand(CLI::App& app, const GlobalOptions& globals);
 
 }  // namespace texsynth::cli

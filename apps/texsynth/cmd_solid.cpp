@@ -12,6 +12,8 @@
 #include "texsynth/core/atomic_file.h"
 #include "texsynth/core/memory_budget.h"
 #include "texsynth/field/mesh_cut.h"
+#include "texsynth/gradient/gradient_solid_file.h"
+#include "texsynth/gradient/gradient_solid_texture.h"
 #include "texsynth/io/file_kind.h"
 #include "texsynth/io/image_io.h"
 #include "texsynth/io/mesh_io.h"
@@ -134,6 +136,21 @@ void requireSolidMemory(const SolidArgs& args, const Box3f& box) {
 std::unique_ptr<SolidTexture> makeSolid(const SolidArgs& args, const Mesh& mesh, const Box3f& box, std::uint64_t seed,
                                         json& report, LazyBuild& lazy) {
   const std::string& exemplar = args.exemplars.front();
+  if (args.method == "gradient") {  // a finished gradient solid, spanning the box
+    auto solid = std::make_shared<const GradientSolid>(readGradientSolid(exemplar));
+    GradientSolidTextureOptions options;
+    options.placement = gradientSolidPlacement(*solid, box);
+    options.detail = args.detail == "on";
+    options.seed = seed;
+    // Blend across a region boundary over one output sample, so edges are smooth but never soft.
+    options.antialiasVoxels = std::min(1.0f, float(solid->voxels.maxCoeff()) / float(args.resolution));
+    report["variant"] = "gradient solid";
+    report["gradient_solid"] = {{"voxels", {solid->voxels.x(), solid->voxels.y(), solid->voxels.z()}},
+                                {"spacing", solid->spacing},
+                                {"regions", solid->hasRegions()},
+                                {"detail", solid->hasDetail() && options.detail}};
+    return makeGradientSolidTexture(std::move(solid), options);
+  }
   bool volumeExemplar = fileKind(exemplar) == FileKind::Volume;
   Volume volume;
   Image image;
@@ -199,6 +216,8 @@ const std::vector<ModeFlag> kSolidModeFlags = {
     {"--coarsest-passes", {"lazy"}},
     {"--dual-grid", {"lazy"}},
     {"--grid-cell", {"lazy"}},
+    {"--tiles", {"tile-deform", "tile-blend", "lazy"}},
+    {"--detail", {"gradient"}},
 };
 
 // Where the library's parameters come from on `solid`'s command line.
@@ -232,8 +251,16 @@ ParameterSources solidParameterSources(const SolidArgs& args) {
           {"depth", fromFlag("--shell")}};
 }
 
-void runSolid(const CLI::App& parser, const SolidArgs& args, const GlobalOptions& globals) {
-  rejectFlagsOutsideMode(parser, kSolidModeFlags, args.method, "with --method " + args.method);
+void runSolid(const CLI::App& parser, SolidArgs& args, const GlobalOptions& globals) {
+  // A .tsgs input is a finished gradient solid: it has no synthesis method to choose.
+  if (fileExtension(args.exemplars.front()) == kGradientSolidExtension) {
+    if (parser.count("--method") > 0)
+      throw ParameterError("--method", "'" + args.exemplars.front() + "' is a finished gradient solid: drop --method");
+    if (args.exemplars.size() > 1) throw ParameterError("EXEMPLAR", "give one .tsgs gradient solid");
+    args.method = "gradient";
+  }
+  rejectFlagsOutsideMode(parser, kSolidModeFlags, args.method,
+                         args.method == "gradient" ? "with a gradient solid (.tsgs)" : "with --method " + args.method);
   rejectFlagsOutsideMode(parser, {{"--render-size", {"--render"}}, {"--views", {"--render"}}},
                          args.render.empty() ? "" : "--render", "without --render");
   rejectFlagsOutsideMode(parser, {{"--shell", {"--inner"}}}, args.inner.empty() ? "" : "--inner", "without --inner");
@@ -372,7 +399,8 @@ Command registerSolidCommand(CLI::App& app, const GlobalOptions& globals) {
   inputFiles(sub->add_option(
                  "EXEMPLAR", args->exemplars,
                  "2D exemplar image, or a 3D exemplar volume (.nrrd); lazy also takes three: XY YZ ZX (the planes' "
-                 "exemplars)"))
+                 "exemplars). A gradient solid (.tsgs, from `texsynth vectorize`) is shown as it is, spanning the "
+                 "mesh's box (or the unit cube)"))
       ->required()
       ->expected(1, 3);
   sub->add_option("--method", args->method, "Synthesis method")
@@ -461,6 +489,10 @@ Command registerSolidCommand(CLI::App& app, const GlobalOptions& globals) {
                  "lazy: feature mask image(s), bright on feature curves (e.g. brick joints): one for all planes or "
                  "three (XY YZ ZX); matching adds the distance to the features as a channel"))
       ->expected(1, 3);
+  sub->add_option("--detail", args->detail,
+                  "A gradient solid (.tsgs) with stored residual detail: add its deterministic grain (on) or not (off)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"on", "off"}));
   sub->add_option("--cut", args->cut,
                   "With --render: add a view of the mesh cut open at AXIS=FRACTION of its box (the +AXIS side "
                   "removed), showing the solid inside");

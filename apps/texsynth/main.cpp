@@ -17,6 +17,8 @@ int main(int argc, char** argv) {
       "texsynth: example-based texture synthesis for images, solids and surfaces.\n"
       "Run 'texsynth demo' for a tour on built-in defaults, or 'texsynth SUBCOMMAND --help'."};
   app.set_help_all_flag("--help-all", "Help for every subcommand");
+  app.footer("Cache: exemplar analyses and candidate triples are kept in " + cli::defaultCacheDirectory() +
+             "\n($TEXSYNTH_CACHE, else $XDG_CACHE_HOME/texsynth, else ~/.cache/texsynth); deleting it is safe.");
   app.require_subcommand(1);
   cli::GlobalOptions globals;
   cli::addGlobalOptions(app, globals);
@@ -25,7 +27,8 @@ int main(int argc, char** argv) {
       cli::registerDemoCommand(app, globals),   cli::registerEvalCommand(app, globals),
       cli::registerRenderCommand(app, globals), cli::registerInfoCommand(app, globals),
       cli::registerImageCommand(app, globals),  cli::registerSolidCommand(app, globals),
-      cli::registerFieldCommand(app, globals),
+      cli::registerFieldCommand(app, globals),  cli::registerVectorizeCommand(app, globals),
+      cli::registerEditCommand(app, globals),
   };
   // Global flags may also follow the subcommand name.
   for (auto& command : commands) {

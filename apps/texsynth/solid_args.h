@@ -30,6 +30,8 @@ struct SolidArgs {
   int levels = 4, passes = 2, coarsestPasses = 3, gridCell = 12;
   bool dualGrid = true;
   float shell = 0.05f;
+  // gradient (a .tsgs input)
+  std::string detail = "on";
 };
 
 // --method lazy: one LazySolid on the exemplars (one for all planes, or XY YZ ZX), guided by

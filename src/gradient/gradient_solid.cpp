@@ -12,6 +12,8 @@
 namespace texsynth {
 namespace {
 
+using Hermite = std::array<float, 4>;
+
 // The cube holding `point` and the point's parameter inside it.
 struct CubeLocation {
   int cube[3];
@@ -31,22 +33,52 @@ CubeLocation locate(const GradientSolid& solid, const Vec3f& point) {
 
 // The 8 corners' control indices, in tricubic weight order (x + 2y + 4z).
 void cornerIndices(const GradientSolid& solid, const CubeLocation& at, std::int64_t* corners) {
-  for (int p = 0; p < 8; ++p)
-    corners[p] = solid.controlIndex(at.cube[0] + (p & 1), at.cube[1] + ((p >> 1) & 1), at.cube[2] + ((p >> 2) & 1));
+  const std::int64_t base = solid.controlIndex(at.cube[0], at.cube[1], at.cube[2]);
+  const std::int64_t dy = solid.controls.x(), dz = std::int64_t(solid.controls.x()) * solid.controls.y();
+  for (int p = 0; p < 8; ++p) corners[p] = base + (p & 1) + ((p >> 1) & 1) * dy + ((p >> 2) & 1) * dz;
 }
 
-// Sum over the 8 corners of weights x their sets (`set(p)` points at corner p's 4 * channels floats).
-template <typename SetOf>
-void accumulate(const float* weights, int channels, SetOf set, float* out) {
-  std::fill(out, out + channels, 0.0f);
-  for (int p = 0; p < 8; ++p) {
-    const float* s = set(p);
-    for (int slot = 0; slot < 4; ++slot) {
-      const float w = weights[4 * p + slot];
-      const float* values = s + slot * channels;
-      for (int c = 0; c < channels; ++c) out[c] += w * values[c];
+// The tricubic sum over the 8 corners' sets, axis by axis: the x sums first, then y, then z (48
+// multiply-adds per channel instead of 96 plus the 64 products of the 32 weights). h* are the axes'
+// Hermite functions. Channels is the channel count when fixed at compile time, else 0.
+template <int Channels>
+void separableSum(const Hermite& hu, const Hermite& hv, const Hermite& hw, int channels, const float* const* sets,
+                  float* out) {
+  const int n = Channels ? Channels : channels;
+  for (int c = 0; c < n; ++c) {
+    float values[2], slopesW[2];  // per z: the x-y sums of values and of d/dw
+    for (int z = 0; z < 2; ++z) {
+      float a[2], b[2], w[2];  // per y: x sums of values (with d/du), of d/dv, of d/dw
+      for (int y = 0; y < 2; ++y) {
+        const float *s0 = sets[2 * y + 4 * z], *s1 = sets[1 + 2 * y + 4 * z];
+        a[y] = hu[0] * s0[c] + hu[1] * s1[c] + hu[2] * s0[n + c] + hu[3] * s1[n + c];
+        b[y] = hu[0] * s0[2 * n + c] + hu[1] * s1[2 * n + c];
+        w[y] = hu[0] * s0[3 * n + c] + hu[1] * s1[3 * n + c];
+      }
+      values[z] = hv[0] * a[0] + hv[1] * a[1] + hv[2] * b[0] + hv[3] * b[1];
+      slopesW[z] = hv[0] * w[0] + hv[1] * w[1];
     }
+    out[c] = hw[0] * values[0] + hw[1] * values[1] + hw[2] * slopesW[0] + hw[3] * slopesW[1];
   }
+}
+
+void accumulate(const Hermite* axes, int channels, const float* const* sets, float* out) {
+  if (channels == 3)
+    separableSum<3>(axes[0], axes[1], axes[2], 3, sets, out);
+  else if (channels == 1)
+    separableSum<1>(axes[0], axes[1], axes[2], 1, sets, out);
+  else
+    separableSum<0>(axes[0], axes[1], axes[2], channels, sets, out);
+}
+
+// The three axes' Hermite functions at a cube location, exact or from the weight table.
+void axisFunctions(const CubeLocation& at, const TricubicWeightTable* table, Hermite* axes) {
+  for (int a = 0; a < 3; ++a) axes[a] = table ? table->axisFunctions(at.t[a]) : hermiteBasis(at.t[a]);
+}
+
+// The 8 corners' sets in `array` (stride floats per control point).
+void cornerSets(const std::vector<float>& array, std::size_t stride, const std::int64_t* corners, const float** sets) {
+  for (int p = 0; p < 8; ++p) sets[p] = &array[std::size_t(corners[p]) * stride];
 }
 
 // First-order approximation (§4.2.4): the nearest control point's value plus its gradients times the offset.
@@ -74,7 +106,8 @@ float gaussianFromKey(std::uint64_t key) {
 
 GradientSolid GradientSolid::zeros(const Vec3i& voxels, int channels, int spacing) {
   if ((voxels.array() < 1).any()) throw ParameterError("voxels", "must be >= 1 on every axis");
-  if (spacing < 1 || spacing > 64) throw ParameterError("spacing", "must be in [1, 64], got " + std::to_string(spacing));
+  if (spacing < 1 || spacing > 64)
+    throw ParameterError("spacing", "must be in [1, 64], got " + std::to_string(spacing));
   if (channels < 1 || channels > 4) throw ParameterError("channels", "must be 1 to 4, got " + std::to_string(channels));
   GradientSolid solid;
   solid.voxels = voxels;
@@ -106,9 +139,12 @@ float evaluateGradientDistance(const GradientSolid& solid, const Vec3f& point) {
   const CubeLocation at = locate(solid, point);
   std::int64_t corners[8];
   cornerIndices(solid, at, corners);
-  float weights[kTricubicWeights], d;
-  tricubicWeights(at.t[0], at.t[1], at.t[2], weights);
-  accumulate(weights, 1, [&](int p) { return &solid.distance[std::size_t(corners[p]) * 4]; }, &d);
+  Hermite axes[3];
+  axisFunctions(at, nullptr, axes);
+  const float* sets[8];
+  cornerSets(solid.distance, 4, corners, sets);
+  float d;
+  accumulate(axes, 1, sets, &d);
   return d;
 }
 
@@ -133,23 +169,27 @@ void evaluateGradientSolid(const GradientSolid& solid, const Vec3f& point, const
     const CubeLocation at = locate(solid, point);
     std::int64_t corners[8];
     cornerIndices(solid, at, corners);
-    float weights[kTricubicWeights];
-    if (options.table)
-      options.table->weights(at.t[0], at.t[1], at.t[2], weights);
-    else
-      tricubicWeights(at.t[0], at.t[1], at.t[2], weights);
+    Hermite weights[3];
+    axisFunctions(at, options.table, weights);
     float distance = 1.0f;
-    if (regions)
-      accumulate(weights, 1, [&](int p) { return &solid.distance[std::size_t(corners[p]) * 4]; }, &distance);
+    const float* sets[8];
+    if (regions) {
+      cornerSets(solid.distance, 4, corners, sets);
+      accumulate(weights, 1, sets, &distance);
+    }
     const float half = 0.5f * options.antialiasVoxels;
+    auto side = [&](bool positive, float* values) {
+      for (int p = 0; p < 8; ++p) sets[p] = positive ? positiveSet(corners[p]) : negativeSet(corners[p]);
+      accumulate(weights, channels, sets, values);
+    };
     if (!regions || distance >= half) {
-      accumulate(weights, channels, [&](int p) { return positiveSet(corners[p]); }, out);
+      side(true, out);
     } else if (distance <= -half) {
-      accumulate(weights, channels, [&](int p) { return negativeSet(corners[p]); }, out);
+      side(false, out);
     } else {  // near the boundary: blend both sides linearly across antialiasVoxels (§5.3)
       float negative[4];
-      accumulate(weights, channels, [&](int p) { return positiveSet(corners[p]); }, out);
-      accumulate(weights, channels, [&](int p) { return negativeSet(corners[p]); }, negative);
+      side(true, out);
+      side(false, negative);
       const float t = 0.5f + distance / options.antialiasVoxels;
       for (int c = 0; c < channels; ++c) out[c] = t * out[c] + (1 - t) * negative[c];
     }
@@ -159,9 +199,12 @@ void evaluateGradientSolid(const GradientSolid& solid, const Vec3f& point, const
     const CubeLocation at = locate(solid, point);
     std::int64_t corners[8];
     cornerIndices(solid, at, corners);
-    float weights[kTricubicWeights], sigma[4];
-    tricubicWeights(at.t[0], at.t[1], at.t[2], weights);
-    accumulate(weights, channels, [&](int p) { return &solid.detail[std::size_t(corners[p]) * setSize]; }, sigma);
+    Hermite weights[3];
+    axisFunctions(at, nullptr, weights);
+    float sigma[4];
+    const float* sets[8];
+    cornerSets(solid.detail, setSize, corners, sets);
+    accumulate(weights, channels, sets, sigma);
     const std::uint64_t cell = latticeId(std::lround(point.x()), std::lround(point.y()), std::lround(point.z()));
     for (int c = 0; c < channels; ++c)
       out[c] += std::max(sigma[c], 0.0f) * gaussianFromKey(hashKey(options.detailSeed, cell, std::uint64_t(c)));

@@ -12,13 +12,33 @@ TricubicWeightTable::TricubicWeightTable(int samplesPerSide) : samples_(samplesP
     throw ParameterError("samplesPerSide", "must be in [2, 257], got " + std::to_string(samplesPerSide));
   table_.resize(std::size_t(samples_) * samples_ * samples_ * kTricubicWeights);
   const float step = 1.0f / float(samples_ - 1);
+  for (int i = 0; i < samples_; ++i) {
+    const std::array<float, 4> h = hermiteBasis(i * step);
+    axes_.insert(axes_.end(), h.begin(), h.end());
+  }
   for (int k = 0; k < samples_; ++k)
     for (int j = 0; j < samples_; ++j)
       for (int i = 0; i < samples_; ++i)
         tricubicWeights(i * step, j * step, k * step, const_cast<float*>(entry(i, j, k)));
 }
 
+std::array<float, 4> TricubicWeightTable::axisFunctions(float t) const {
+  const float s = std::clamp(t, 0.0f, 1.0f) * float(samples_ - 1);
+  const int i = std::min(int(s), samples_ - 2);
+  const float f = s - float(i);
+  std::array<float, 4> h;
+  for (int k = 0; k < 4; ++k) h[k] = (1 - f) * axes_[std::size_t(i) * 4 + k] + f * axes_[std::size_t(i + 1) * 4 + k];
+  return h;
+}
+
 void TricubicWeightTable::weights(float u, float v, float w, float* out) const {
+  // Every entry is a product of one Hermite function per axis, so trilinear interpolation of the
+  // entries equals the product of linear interpolations of the axes' sampled functions: the same
+  // numbers as the 3D fetch, from 3 x 2 x 4 table values instead of 8 x 32.
+  tricubicWeights(axisFunctions(u), axisFunctions(v), axisFunctions(w), out);
+}
+
+void TricubicWeightTable::weightsFromEntries(float u, float v, float w, float* out) const {
   const float scale = float(samples_ - 1);
   int base[3];
   float frac[3];

@@ -1,6 +1,6 @@
 #pragma once
 // Progress reporting for long work: a stage name, done/total, and a way to cancel.
-// Algorithms take a Progress& and call begin/advance; the CLI draws a bar, the server streams.
+// Algorithms take a Progress& and call begin/advance; the CLI draws a bar on stderr.
 #include <atomic>
 #include <chrono>
 #include <cstdint>

@@ -17,7 +17,7 @@ namespace texsynth {
 struct AnalysisOptions {
   // Stack levels L; 0 = floor(log2(min(width, height))) as in L&H 2005.
   int levelCount = 0;
-  // Neighborhood side N (odd). 5 as in L&H 2005; the solid and surface methods pass 7 or 9.
+  // Neighborhood side N (odd). 5 as in L&H 2005; lazy solids use 7 and 9, texture optimization 17 and 9.
   int neighborhoodSize = 5;
   // Optional N per level, coarsest first; the last entry also serves every finer level (the
   // sketch-guided solid paper: {7, 9} = 7 at the coarsest, 9 elsewhere). Empty = N everywhere.

@@ -57,11 +57,11 @@ struct GradientSolid {
 };
 
 struct GradientEvaluateOptions {
-  bool exact = true;                        // exact tricubic; false: the first-order approximation (§4.2.4)
+  bool exact = true;                                 // exact tricubic; false: the first-order approximation (§4.2.4)
   const class TricubicWeightTable* table = nullptr;  // exact only: weights from this table instead
-  bool regions = true;                      // use the two regions when the solid has them
-  float antialiasVoxels = 1.0f;             // width of the linear blend across a region boundary (§5.3)
-  bool detail = false;                      // add the residual grain when the solid has it
+  bool regions = true;                               // use the two regions when the solid has them
+  float antialiasVoxels = 0.0f;  // width of the linear blend across a region boundary (§5.3); 0: sharp
+  bool detail = false;           // add the residual grain when the solid has it
   std::uint64_t detailSeed = 0;
 };
 

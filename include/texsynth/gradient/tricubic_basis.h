@@ -48,7 +48,8 @@ inline void tricubicWeights(float u, float v, float w, float* weights) {
 
 // The precomputed weights of §3/§5.3: (samples)^3 points per cube, spaced 1/(samples-1) of a cube,
 // 32 weights each (33^3 x 32 is 1/8 voxel at spacing 4, about 4.4 MB; 17^3 x 32 is 1/4 voxel, 0.6 MB).
-// Lookups interpolate the entries trilinearly, as a GPU's texture fetch does.
+// Lookups interpolate the entries trilinearly, as a GPU's texture fetch does; on the CPU weights()
+// gets the same numbers from the table's per-axis factors (see tricubic_basis.cpp).
 class TricubicWeightTable {
  public:
   explicit TricubicWeightTable(int samplesPerSide = 33);
@@ -60,10 +61,15 @@ class TricubicWeightTable {
   }
   // Weights at (u,v,w) in [0,1]^3, trilinear between the 8 nearest entries.
   void weights(float u, float v, float w, float* out) const;
+  // The table's factor along one axis at t: the 4 Hermite functions interpolated linearly.
+  std::array<float, 4> axisFunctions(float t) const;
+  // The same by fetching the 8 entries (the GPU's way; slower on a CPU).
+  void weightsFromEntries(float u, float v, float w, float* out) const;
 
  private:
   int samples_;
   std::vector<float> table_;
+  std::vector<float> axes_;  // the 4 Hermite functions at each sample of one axis
 };
 
 }  // namespace texsynth

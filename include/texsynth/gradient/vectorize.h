@@ -18,18 +18,18 @@
 namespace texsynth {
 
 struct VectorizeOptions {
-  int spacing = 4;         // d, voxels between control points (paper: 4)
-  bool optimize = false;   // refine by eq. 3 (paper: Table 1 "w/ opt.")
-  int iterations = 12;     // conjugate-gradient iterations of the refinement
-  bool detail = false;     // fit residual sigma (§5.4)
-  bool quantize = true;    // round to the .tsgs file's 8-bit values before measuring
+  int spacing = 4;        // d, voxels between control points (paper: 4)
+  bool optimize = false;  // refine by eq. 3 (paper: Table 1 "w/ opt.")
+  int iterations = 12;    // conjugate-gradient iterations of the refinement
+  bool detail = false;    // fit residual sigma (§5.4)
+  bool quantize = true;   // round to the .tsgs file's 8-bit values before measuring
 };
 
 struct VectorizeReport {
   double fitSeconds = 0;       // first-order fit (with regions: distance and dilation included)
   double optimizeSeconds = 0;  // eq. 3 refinement
   double totalSeconds = 0;
-  double rms = 0;              // 0..255, over all voxels and channels, of the (quantized) result
+  double rms = 0;  // 0..255, over all voxels and channels, of the (quantized) result
   std::int64_t boundaryControls = 0;
 };
 

@@ -10,7 +10,8 @@
 // so any window is bit-identical to the same region of a larger output, for any thread count.
 //
 // The building blocks (upsampleCoordinates, jitterCoordinates, correctCoordinates) are
-// exposed so the 3D and surface synthesizers can reuse the same pieces.
+// exposed; texture optimization starts each finer level with the first two. Lazy solid
+// synthesis has its own 3D versions (src/solid/lazy_upsample.cpp, lazy_correction.cpp).
 #include <cstdint>
 #include <vector>
 
@@ -73,7 +74,7 @@ Image synthesizeParallel(const ExemplarAnalysis& analysis, const ParallelSynthes
 // coords.width x coords.height image. Also re-applies one synthesis to another map.
 Image lookupColors(const Image& image, const SourceCoordinates& coords, int channels = 0);
 
-// ---- Building blocks (shared with the 3D / surface synthesizers) ----
+// ---- Building blocks (also used by texture optimization) ----
 
 // Margin, in pixels of `level`, by which `passes` corrections shrink the valid region: every
 // subpass reads neighborhoods of radius max(N_l/2, 1), and a pass has s^2 subpasses.

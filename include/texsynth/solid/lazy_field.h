@@ -1,6 +1,7 @@
 #pragma once
-// Orientation sources for lazy solid synthesis. Header-only on purpose: the solid module does
-// not link the field module, so code that has a RotationField (the CLI) builds the adapter.
+// Orientation sources for lazy solid synthesis: adapters from a RotationField (and a constant
+// rotation) to the LazyOrientation function that LazySolid takes, so lazy_solid.h needs no
+// field types.
 #include <memory>
 #include <vector>
 

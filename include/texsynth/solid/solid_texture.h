@@ -1,8 +1,9 @@
 #pragma once
 // SolidTexture: the one interface every solid-texture method implements (tile-deform,
-// tile-blend; later lazy synthesis and gradient solids). It answers "which values at these
-// 3D points?" for a batch of points, optionally with surface normals. Everything that
-// consumes solids (mesh colouring, renderer, slices, volumes) is written once against it.
+// tile-blend, lazy synthesis, regions of several solids; gradient solids through
+// texsynth/gradient/gradient_solid_texture.h). It answers "which values at these 3D points?"
+// for a batch of points, optionally with surface normals. Everything that consumes solids
+// (mesh colouring, renderer, slices, volumes) is written once against it.
 //
 // Units: points are in world units. Each texture maps them to exemplar pixels through a
 // SolidPlacement (exemplar = (world - origin) * pixelsPerUnit). fitPlacement() gives the

@@ -1,0 +1,61 @@
+// Eq. 2: each control point's value and gradients from a first-order Taylor fit to its bucket of voxels.
+#include <Eigen/Dense>
+
+#include "texsynth/core/parallel.h"
+#include "vectorize_layout.h"
+
+namespace texsynth::vectorize_detail {
+namespace {
+
+// Gradients are damped a little so that a bucket one voxel thin (a control past the volume's end)
+// still gives a well-posed system; 1e-3 of the sample count changes nothing measurable elsewhere.
+constexpr double kGradientDamping = 1e-3;
+
+void fitSet(const ControlGrid& grid, int i, int j, int k, const Volume& samples, int channels, float* set) {
+  const int index[3] = {i, j, k};
+  int begin[3], end[3];
+  for (int a = 0; a < 3; ++a) begin[a] = grid.ownedBegin(a, index[a]), end[a] = grid.ownedEnd(a, index[a]);
+  Eigen::Matrix4d normal = Eigen::Matrix4d::Zero();
+  Eigen::Matrix<double, 4, 4> rhs = Eigen::Matrix<double, 4, 4>::Zero();  // columns: channels
+  const double inverse = 1.0 / grid.spacing;
+  for (int z = begin[2]; z < end[2]; ++z)
+    for (int y = begin[1]; y < end[1]; ++y)
+      for (int x = begin[0]; x < end[0]; ++x) {
+        const Eigen::Vector4d basis(1.0, (x - i * grid.spacing) * inverse, (y - j * grid.spacing) * inverse,
+                                    (z - k * grid.spacing) * inverse);
+        normal.noalias() += basis * basis.transpose();
+        const float* value = samples.voxel(x, y, z);
+        for (int c = 0; c < channels; ++c) rhs.col(c) += basis * double(value[c]);
+      }
+  const double count = normal(0, 0);
+  for (int a = 1; a < 4; ++a) normal(a, a) += kGradientDamping * count;
+  const Eigen::LDLT<Eigen::Matrix4d> solver(normal);
+  for (int c = 0; c < channels; ++c) {
+    const Eigen::Vector4d solution = solver.solve(rhs.col(c));
+    for (int slot = 0; slot < 4; ++slot) set[slot * channels + c] = float(solution[slot]);
+  }
+}
+
+}  // namespace
+
+void fitFirstOrder(const FitLayout& layout, const FitTargets& targets, std::vector<float>& unknowns) {
+  const ControlGrid& grid = layout.grid;
+  const int channels = layout.channels;
+  const std::size_t setSize = 4 * std::size_t(channels);
+  unknowns.resize(std::size_t(layout.slots()) * setSize);
+  parallelFor(0, grid.controls.z(), [&](std::int64_t k) {
+    for (int j = 0; j < grid.controls.y(); ++j)
+      for (int i = 0; i < grid.controls.x(); ++i) {
+        const std::int64_t control = grid.controlIndex(i, j, int(k));
+        const std::int64_t negativeSlot = layout.slot(control, -1);
+        if (negativeSlot == control) {
+          fitSet(grid, i, j, int(k), *targets.original, channels, &unknowns[std::size_t(control) * setSize]);
+        } else {  // next to the boundary: one set per side, each from its side's dilated samples (§4.3)
+          fitSet(grid, i, j, int(k), targets.forSide(1), channels, &unknowns[std::size_t(control) * setSize]);
+          fitSet(grid, i, j, int(k), targets.forSide(-1), channels, &unknowns[std::size_t(negativeSlot) * setSize]);
+        }
+      }
+  });
+}
+
+}  // namespace texsynth::vectorize_detail
