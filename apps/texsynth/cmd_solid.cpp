@@ -396,11 +396,12 @@ Command registerSolidCommand(CLI::App& app, const GlobalOptions& globals) {
       "--mesh, .png .jpg .exr the next --slice, .nrrd .vdb the volume over the mesh's box (or the unit cube) at "
       "--resolution.");
   auto args = std::make_shared<SolidArgs>();
-  inputFiles(sub->add_option(
-                 "EXEMPLAR", args->exemplars,
-                 "2D exemplar image, or a 3D exemplar volume (.nrrd .vdb); lazy also takes three: XY YZ ZX (the planes' "
-                 "exemplars). A gradient solid (.tsgs, from `texsynth vectorize`) is shown as it is, spanning the "
-                 "mesh's box (or the unit cube)"))
+  inputFiles(
+      sub->add_option(
+          "EXEMPLAR", args->exemplars,
+          "2D exemplar image, or a 3D exemplar volume (.nrrd .vdb); lazy also takes three: XY YZ ZX (the planes' "
+          "exemplars). A gradient solid (.tsgs, from `texsynth vectorize`) is shown as it is, spanning the "
+          "mesh's box (or the unit cube)"))
       ->required()
       ->expected(1, 3);
   sub->add_option("--method", args->method, "Synthesis method")
