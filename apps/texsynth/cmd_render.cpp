@@ -1,8 +1,11 @@
-// texsynth render MESH|VOLUME -o view.png: a shaded picture of a mesh, or a slice montage of a volume.
+// texsynth render MESH|VOLUME|SOLID.tsgs -o view.png: a shaded picture of a mesh, or a slice montage of a
+// volume or a gradient solid.
 #include "cli_common.h"
 #include "mode_flags.h"
 #include "number_checks.h"
 #include "texsynth/core/memory_budget.h"
+#include "texsynth/core/volume.h"
+#include "texsynth/gradient/gradient_solid_file.h"
 #include "texsynth/io/file_kind.h"
 #include "texsynth/io/image_io.h"
 #include "texsynth/io/mesh_io.h"
@@ -15,7 +18,8 @@ namespace texsynth::cli {
 Command registerRenderCommand(CLI::App& app, const GlobalOptions& globals) {
   auto* sub = app.add_subcommand("render",
                                  "Render a mesh (per-vertex colors if it has them, Lambert + ambient, camera fitted "
-                                 "automatically) or a volume (slices normal to x, y and z) to an image");
+                                 "automatically), or a volume or gradient solid (.tsgs; slices normal to x, y and z), "
+                                 "to an image");
   struct Args {
     std::string input, output, size = "768";
     float yaw = 30, pitch = 20;
@@ -23,7 +27,8 @@ Command registerRenderCommand(CLI::App& app, const GlobalOptions& globals) {
   };
   auto args = std::make_shared<Args>();
   inputFiles(sub->add_option("INPUT", args->input,
-                             "Mesh (" + readableMeshExtensions() + ") or volume (" + readableVolumeExtensions() + ")"))
+                             "Mesh (" + readableMeshExtensions() + "), volume (" + readableVolumeExtensions() +
+                                 ") or gradient solid (.tsgs)"))
       ->required();
   outputFiles(sub->add_option("-o,--output", args->output, "Output image (.png .jpg .exr ...)"))->required();
   sub->add_option("--size", args->size, "Image size of one view, WxH or N")->capture_default_str();
@@ -56,7 +61,9 @@ Command registerRenderCommand(CLI::App& app, const GlobalOptions& globals) {
 
   return {sub,
           [sub, meshOnly, args, &globals] {
-            rejectFlagsOutsideMode(*sub, meshOnly, fileKind(args->input) == FileKind::Volume ? "" : "meshes",
+            const FileKind kind = fileKind(args->input);
+            rejectFlagsOutsideMode(*sub, meshOnly,
+                                   kind == FileKind::Volume || kind == FileKind::GradientSolid ? "" : "meshes",
                                    "for a volume");
             // Check the output format before the work, so a typo costs nothing.
             if (fileKind(args->output) != FileKind::Image)
@@ -82,9 +89,20 @@ Command registerRenderCommand(CLI::App& app, const GlobalOptions& globals) {
               case FileKind::Volume:
                 picture = sliceMontage(readVolume(args->input));
                 break;
+              case FileKind::GradientSolid: {  // its equivalent raster, region boundaries antialiased
+                const GradientSolid solid = readGradientSolid(args->input);
+                requireMemory(double(solid.voxels.cast<double>().prod()) * solid.channels * 4.0, "INPUT",
+                              "the gradient solid's raster");
+                GradientEvaluateOptions options;
+                options.antialiasVoxels = 1.0f;
+                options.detail = true;
+                picture = sliceMontage(rasterizeGradientSolid(solid, options));
+                break;
+              }
               default:
                 throw InputError(args->input, "cannot render this file type; give a mesh (" + readableMeshExtensions() +
-                                                  ") or a volume (" + readableVolumeExtensions() + ")");
+                                                  "), a volume (" + readableVolumeExtensions() +
+                                                  ") or a gradient solid (.tsgs)");
             }
             writeImage(args->output, picture);
             say(globals, "wrote " + args->output);

@@ -63,8 +63,15 @@ EditInfluence fitEditInfluence(const StrokeVoxels& voxels, const std::vector<flo
   influence.alpha = options.alpha;
   influence.beta = options.beta;
   influence.colorChannels = colorChannels;
-  const int m = std::min(options.centres, n);
-  for (int j : drawDistinct(n, m, options.seed, kCentreDraw)) {
+  // Centres come from the voxels to be edited: a centre on a protect stroke (strength 0) could only
+  // raise h where it must stay 0, and would crowd out the centres the edit needs.
+  std::vector<int> edited;
+  for (int j = 0; j < n; ++j)
+    if (voxels.strengths[std::size_t(j)] > 0) edited.push_back(j);
+  if (edited.empty()) edited.push_back(0);  // nothing to edit: one centre, which the program weighs 0
+  const int m = std::min(options.centres, int(edited.size()));
+  for (int draw : drawDistinct(int(edited.size()), m, options.seed, kCentreDraw)) {
+    const int j = edited[std::size_t(draw)];
     influence.centres.push_back(voxels.positions[std::size_t(j)].cast<float>());
     std::array<float, 3> colour{0, 0, 0};
     for (int c = 0; c < colorChannels; ++c)
