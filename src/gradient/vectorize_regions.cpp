@@ -39,7 +39,7 @@ std::vector<CubeSides> cubeSidesOf(const ControlGrid& grid, const Volume& mask) 
 // Carries the values of side `sign` into the other side's voxels up to `rings` voxels (Chebyshev) from
 // the boundary, one ring of 26-neighbours at a time, each voxel taking the mean of its neighbours valued
 // in earlier rings (a dilation, §4.3). Other voxels keep their own values.
-Volume dilateSide(const Volume& colors, const Volume& mask, int sign, int rings) {
+Volume dilateSide(const Volume& colors, const Volume& mask, const Volume& distance, int sign, int rings) {
   Volume out = colors;
   const int c = colors.channels;
   const std::int64_t nx = mask.nx, ny = mask.ny, nz = mask.nz;
@@ -55,10 +55,11 @@ Volume dilateSide(const Volume& colors, const Volume& mask, int sign, int rings)
           f((qz * ny + qy) * nx + qx);
         }
   };
-  // The first ring: the other side's voxels touching this side.
+  // The first ring: the other side's voxels touching this side. A 26-neighbour is at most sqrt(3) away, so
+  // only voxels that close to the boundary (|signed distance| <= sqrt(3) - 1/2) need looking at.
   std::vector<std::int64_t> ring;
   for (std::int64_t v = 0; v < std::int64_t(valued.size()); ++v)
-    if (!valued[std::size_t(v)]) {
+    if (!valued[std::size_t(v)] && std::abs(distance.voxels[std::size_t(v)]) <= 1.25f) {
       bool touches = false;
       forNeighbours(v, [&](std::int64_t q) { touches = touches || valued[std::size_t(q)]; });
       if (touches) ring.push_back(v), queued[std::size_t(v)] = 1;
@@ -115,8 +116,8 @@ Regions separateRegions(const ControlGrid& grid, const Volume& colors, const Vol
     if (index == 0) index = std::int32_t(regions.negatives++);
   // A boundary control's bucket reaches 1.5 cubes (Chebyshev) from the boundary.
   const int rings = (3 * grid.spacing + 1) / 2 + 1;
-  regions.positive = dilateSide(colors, mask, 1, rings);
-  regions.negative = dilateSide(colors, mask, -1, rings);
+  regions.positive = dilateSide(colors, mask, regions.signedDistance, 1, rings);
+  regions.negative = dilateSide(colors, mask, regions.signedDistance, -1, rings);
   return regions;
 }
 

@@ -13,6 +13,7 @@
 // Coordinates are the equivalent raster's voxel units: control (i,j,k) sits at (i,j,k) * spacing, and
 // voxel (x,y,z) of the raster the solid stands for is the point (x,y,z). Colours are in [0,1].
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "texsynth/core/math.h"
@@ -68,6 +69,11 @@ struct GradientEvaluateOptions {
 // Channels values at `point` (voxel units, clamped to the solid's extent) into `out`.
 void evaluateGradientSolid(const GradientSolid& solid, const Vec3f& point, const GradientEvaluateOptions& options,
                            float* out);
+
+// The same for a batch of points, channels values each into `out`: faster where consecutive points share
+// cubes (slices, volumes, render spans).
+void evaluateGradientSolid(const GradientSolid& solid, std::span<const Vec3f> points,
+                           const GradientEvaluateOptions& options, float* out);
 
 // The signed distance at `point` (voxels); 0 without regions.
 float evaluateGradientDistance(const GradientSolid& solid, const Vec3f& point);
