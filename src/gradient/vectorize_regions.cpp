@@ -36,61 +36,75 @@ std::vector<CubeSides> cubeSidesOf(const ControlGrid& grid, const Volume& mask) 
   return sides;
 }
 
-// Carries the values of side `sign` into the other side's voxels up to `rings` voxels (Chebyshev) from
-// the boundary, one ring of 26-neighbours at a time, each voxel taking the mean of its neighbours valued
-// in earlier rings (a dilation, §4.3). Other voxels keep their own values.
-Volume dilateSide(const Volume& colors, const Volume& mask, const Volume& distance, int sign, int rings) {
-  Volume out = colors;
-  const int c = colors.channels;
-  const std::int64_t nx = mask.nx, ny = mask.ny, nz = mask.nz;
-  std::vector<std::uint8_t> valued(mask.voxelCount()), queued(mask.voxelCount(), 0);
-  for (std::size_t v = 0; v < valued.size(); ++v) valued[v] = insideMask(mask, v) == (sign > 0);
-  auto forNeighbours = [&](std::int64_t v, auto f) {
-    const std::int64_t x = v % nx, y = (v / nx) % ny, z = v / (nx * ny);
-    for (std::int64_t dz = -1; dz <= 1; ++dz)
-      for (std::int64_t dy = -1; dy <= 1; ++dy)
-        for (std::int64_t dx = -1; dx <= 1; ++dx) {
-          const std::int64_t qx = x + dx, qy = y + dy, qz = z + dz;
-          if ((dx | dy | dz) == 0 || qx < 0 || qy < 0 || qz < 0 || qx >= nx || qy >= ny || qz >= nz) continue;
-          f((qz * ny + qy) * nx + qx);
+// Chessboard (26-neighbour) distance from every voxel to the nearest voxel of side `sign`, capped at
+// `cap`: separable, one pass per axis, each line independent.
+std::vector<std::uint8_t> chessboardDistance(const Volume& mask, int sign, int cap) {
+  const int n[3] = {mask.nx, mask.ny, mask.nz};
+  const std::size_t stride[3] = {1, std::size_t(n[0]), std::size_t(n[0]) * std::size_t(n[1])};
+  std::vector<std::uint8_t> d(mask.voxelCount());
+  for (std::size_t v = 0; v < d.size(); ++v) d[v] = insideMask(mask, v) == (sign > 0) ? 0 : std::uint8_t(cap);
+  for (int axis = 0; axis < 3; ++axis) {
+    const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
+    const int length = n[axis], lines1 = n[a1];
+    const std::size_t step = stride[axis], step1 = stride[a1], step2 = stride[a2];
+    parallelFor(0, std::int64_t(lines1) * n[a2], [&d, length, lines1, step, step1, step2](std::int64_t line) {
+      const std::size_t start = std::size_t(line % lines1) * step1 + std::size_t(line / lines1) * step2;
+      std::vector<std::uint8_t> in(static_cast<std::size_t>(length));
+      for (int i = 0; i < length; ++i) in[std::size_t(i)] = d[start + std::size_t(i) * step];
+      for (int i = 0; i < length; ++i) {  // min over k of max(|k|, in[i + k])
+        int best = in[std::size_t(i)];
+        for (int k = 1; k < best; ++k) {
+          if (i - k >= 0) best = std::min(best, std::max(k, int(in[std::size_t(i - k)])));
+          if (i + k < length) best = std::min(best, std::max(k, int(in[std::size_t(i + k)])));
         }
-  };
-  // The first ring: the other side's voxels touching this side. A 26-neighbour is at most sqrt(3) away, so
-  // only voxels that close to the boundary (|signed distance| <= sqrt(3) - 1/2) need looking at.
-  std::vector<std::int64_t> ring;
-  for (std::int64_t v = 0; v < std::int64_t(valued.size()); ++v)
-    if (!valued[std::size_t(v)] && std::abs(distance.voxels[std::size_t(v)]) <= 1.25f) {
-      bool touches = false;
-      forNeighbours(v, [&](std::int64_t q) { touches = touches || valued[std::size_t(q)]; });
-      if (touches) ring.push_back(v), queued[std::size_t(v)] = 1;
-    }
-  std::vector<float> values;
-  for (int r = 0; r < rings && !ring.empty(); ++r) {
-    values.assign(ring.size() * std::size_t(c), 0.0f);
-    parallelForChunks(0, std::int64_t(ring.size()), 1024, [&](std::int64_t begin, std::int64_t end) {
-      for (std::int64_t n = begin; n < end; ++n) {
-        float* sum = &values[std::size_t(n) * std::size_t(c)];
-        int count = 0;
-        forNeighbours(ring[std::size_t(n)], [&](std::int64_t q) {
-          if (!valued[std::size_t(q)]) return;
-          ++count;
-          for (int ch = 0; ch < c; ++ch) sum[ch] += out.voxels[std::size_t(q) * std::size_t(c) + std::size_t(ch)];
-        });
-        for (int ch = 0; ch < c; ++ch) sum[ch] /= float(count);
+        d[start + std::size_t(i) * step] = std::uint8_t(best);
       }
     });
-    for (std::size_t n = 0; n < ring.size(); ++n) {
-      std::copy_n(&values[n * std::size_t(c)], c, &out.voxels[std::size_t(ring[n]) * std::size_t(c)]);
-      valued[std::size_t(ring[n])] = 1;
-    }
-    std::vector<std::int64_t> next;
-    for (std::int64_t v : ring)
-      forNeighbours(v, [&](std::int64_t q) {
-        if (valued[std::size_t(q)] || queued[std::size_t(q)]) return;
-        queued[std::size_t(q)] = 1;
-        next.push_back(q);
-      });
-    ring.swap(next);
+  }
+  return d;
+}
+
+// Carries the values of side `sign` into the other side's voxels up to `rings` voxels (chessboard
+// distance) from it, ring by ring, each voxel taking the mean of its 26-neighbours in nearer rings (a
+// dilation, §4.3). Other voxels keep their own values. A ring's voxels read only nearer rings, so each
+// ring runs in parallel, in place.
+Volume dilateSide(const Volume& colors, const Volume& mask, int sign, int rings) {
+  Volume out = colors;
+  const int c = colors.channels;
+  const std::vector<std::uint8_t> ring = chessboardDistance(mask, sign, rings + 1);
+  const std::int64_t nx = mask.nx, ny = mask.ny, nz = mask.nz;
+  // Each ring's voxels, collected per z-slice and joined in order (the same lists at any thread count).
+  std::vector<std::vector<std::vector<std::int64_t>>> slices{std::size_t(nz)};
+  parallelFor(0, nz, [&](std::int64_t z) {
+    auto& lists = slices[std::size_t(z)];
+    lists.resize(std::size_t(rings) + 1);
+    for (std::int64_t v = z * nx * ny; v < (z + 1) * nx * ny; ++v)
+      if (ring[std::size_t(v)] >= 1 && ring[std::size_t(v)] <= rings) lists[ring[std::size_t(v)]].push_back(v);
+  });
+  for (int r = 1; r <= rings; ++r) {
+    std::vector<std::int64_t> voxels;
+    for (const auto& lists : slices)
+      voxels.insert(voxels.end(), lists[std::size_t(r)].begin(), lists[std::size_t(r)].end());
+    parallelForChunks(0, std::int64_t(voxels.size()), 1024, [&](std::int64_t begin, std::int64_t end) {
+      for (std::int64_t i = begin; i < end; ++i) {
+        const std::int64_t v = voxels[std::size_t(i)];
+        const std::int64_t x = v % nx, y = (v / nx) % ny, z = v / (nx * ny);
+        float sum[4] = {0, 0, 0, 0};
+        int count = 0;
+        for (std::int64_t dz = -1; dz <= 1; ++dz)
+          for (std::int64_t dy = -1; dy <= 1; ++dy)
+            for (std::int64_t dx = -1; dx <= 1; ++dx) {
+              const std::int64_t qx = x + dx, qy = y + dy, qz = z + dz;
+              if (qx < 0 || qy < 0 || qz < 0 || qx >= nx || qy >= ny || qz >= nz) continue;
+              const std::size_t q = std::size_t((qz * ny + qy) * nx + qx);
+              if (ring[q] >= r) continue;
+              ++count;
+              for (int ch = 0; ch < c; ++ch) sum[ch] += out.voxels[q * std::size_t(c) + std::size_t(ch)];
+            }
+        for (int ch = 0; ch < c; ++ch)
+          out.voxels[std::size_t(v) * std::size_t(c) + std::size_t(ch)] = sum[ch] / float(count);
+      }
+    });
   }
   return out;
 }
@@ -116,8 +130,8 @@ Regions separateRegions(const ControlGrid& grid, const Volume& colors, const Vol
     if (index == 0) index = std::int32_t(regions.negatives++);
   // A boundary control's bucket reaches 1.5 cubes (Chebyshev) from the boundary.
   const int rings = (3 * grid.spacing + 1) / 2 + 1;
-  regions.positive = dilateSide(colors, mask, regions.signedDistance, 1, rings);
-  regions.negative = dilateSide(colors, mask, regions.signedDistance, -1, rings);
+  regions.positive = dilateSide(colors, mask, 1, rings);
+  regions.negative = dilateSide(colors, mask, -1, rings);
   return regions;
 }
 
