@@ -23,5 +23,4 @@ echo
   pink_marble/tile-deform="$v/pink_marble_tile-deform.nrrd" \
   pink_marble/lazy="$v/pink_marble_lazy.nrrd" \
   choc_swirl/tile-deform="$v/choc_swirl_tile-deform.nrrd" \
-  choc_swirl/tile-deform="$v/choc_swirl_tile-deform.nrrd,$v/choc_swirl_tile-deform_mask.nrrd" \
-  choc_swirl/lazy="$v/choc_swirl_lazy.nrrd"
+  choc_swirl/tile-deform="$v/choc_swirl_tile-deform.nrrd,$v/choc_swirl_tile-deform_mask.nrrd"
