@@ -1,6 +1,8 @@
 // Table 1 of the gradient-solid paper on our volumes, next to two baselines at the same bytes, then
-// evaluation speeds. Usage (bench/gradient_table.sh runs it on the test volumes):
-//   gradient_table [--threads N] [--speed-points N] NAME=VOLUME.nrrd[,MASK.nrrd] ...
+// evaluation speeds and the edit of §4.4 against its raster. Usage (bench/gradient_table.sh runs it on the test
+// volumes):
+//   gradient_table [--threads N] [--speed-points N] [--no-edit] NAME=VOLUME.nrrd[,MASK.nrrd] ...
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <memory>
@@ -8,6 +10,7 @@
 #include <vector>
 
 #include "gradient_baselines.h"
+#include "gradient_edit_speed.h"
 #include "gradient_eval_speed.h"
 #include "texsynth/core/parallel.h"
 #include "texsynth/gradient/gradient_solid_file.h"
@@ -62,6 +65,7 @@ int main(int argc, char** argv) {
   try {
     int threads = 0;
     std::int64_t speedPoints = 10'000'000;
+    bool edit = true;  // time §4.4's edit on a volume's solid magnified to 512^3
     std::vector<Entry> entries;
     for (int i = 1; i < argc; ++i) {
       const std::string argument = argv[i];
@@ -69,11 +73,14 @@ int main(int argc, char** argv) {
         threads = std::stoi(argv[++i]);
       else if (argument == "--speed-points" && i + 1 < argc)
         speedPoints = std::stoll(argv[++i]);
+      else if (argument == "--no-edit")
+        edit = false;
       else
         entries.push_back(parseEntry(argument));
     }
     if (entries.empty()) {
-      std::fprintf(stderr, "usage: gradient_table [--threads N] [--speed-points N] NAME=VOLUME[,MASK] ...\n");
+      std::fprintf(stderr,
+                   "usage: gradient_table [--threads N] [--speed-points N] [--no-edit] NAME=VOLUME[,MASK] ...\n");
       return 2;
     }
     const ThreadLimit limit(threads);
@@ -94,6 +101,12 @@ int main(int argc, char** argv) {
       for (std::size_t i = 0; i < entries.size(); ++i) named.emplace_back(entries[i].name, solids[i].get());
       std::printf("\n");
       bench::printEvaluationSpeeds(named, speedPoints);
+    }
+    if (edit) {
+      std::printf("\n");
+      // The first solid without regions (the magnified copy keeps one region).
+      const auto plain = std::find_if(solids.begin(), solids.end(), [](const auto& s) { return !s->hasRegions(); });
+      bench::printEditSpeeds(plain != solids.end() ? **plain : *solids.front());
     }
     return 0;
   } catch (const std::exception& error) {
