@@ -37,9 +37,11 @@ class GradientCommands : public ::testing::Test {
           mask.at(x, y, z, 0) = inside ? 1.0f : 0.0f;
           float* v = ball.voxel(x, y, z);
           if (inside) {
-            v[0] = 0.85f, v[1] = 0.3f + 0.2f * std::sin(0.7f * float(x)), v[2] = 0.2f + 0.1f * std::cos(0.5f * float(y));
+            v[0] = 0.85f, v[1] = 0.3f + 0.2f * std::sin(0.7f * float(x)),
+            v[2] = 0.2f + 0.1f * std::cos(0.5f * float(y));
           } else {
-            v[0] = 0.2f + 0.15f * std::sin(0.9f * float(x) + 0.4f * float(z)), v[1] = 0.4f + 0.2f * std::cos(0.6f * float(y));
+            v[0] = 0.2f + 0.15f * std::sin(0.9f * float(x) + 0.4f * float(z)),
+            v[1] = 0.4f + 0.2f * std::cos(0.6f * float(y));
             v[2] = 0.7f;
           }
         }
@@ -141,8 +143,9 @@ TEST_F(GradientCommands, VectorizeBadVolumesNameTheFile) {
 TEST_F(GradientCommands, MismatchedMaskNamesTheMaskFile) {
   Volume small(kSide / 2, kSide / 2, kSide / 2, 1, 1.0f);
   writeVolume(file("small_mask.nrrd"), small);
-  test::expectOneLineError(run("vectorize " + volume() + " --mask " + file("small_mask.nrrd") + " -o " + file("a.tsgs")),
-                           1, "small_mask.nrrd: is 12x12x12, the volume 24x24x24");
+  test::expectOneLineError(
+      run("vectorize " + volume() + " --mask " + file("small_mask.nrrd") + " -o " + file("a.tsgs")), 1,
+      "small_mask.nrrd: is 12x12x12, the volume 24x24x24");
   test::expectOneLineError(run("vectorize " + volume() + " --mask " + volume() + " -o " + file("a.tsgs")), 1,
                            volume() + ": must have one channel");
   EXPECT_FALSE(std::filesystem::exists(file("a.tsgs")));
@@ -190,13 +193,12 @@ TEST_F(GradientCommands, ProtectStrokesAloneChangeNothing) {
 TEST_F(GradientCommands, EditErrors) {
   const std::string good = strokes("s.json", 1.0f, "");
   test::writeBytes(file("bad.json"), "{\"strokes\": [{\"points\": [[1, 2]]}]}");
-  test::expectOneLineError(run("edit " + solid() + " --strokes " + file("bad.json") + " --color 1,0,0 -o " +
-                               file("o.tsgs")),
-                           1, "bad.json");
+  test::expectOneLineError(
+      run("edit " + solid() + " --strokes " + file("bad.json") + " --color 1,0,0 -o " + file("o.tsgs")), 1, "bad.json");
   test::writeBytes(file("junk.json"), "{\"strokes\": [");
-  test::expectOneLineError(run("edit " + solid() + " --strokes " + file("junk.json") + " --color 1,0,0 -o " +
-                               file("o.tsgs")),
-                           1, "junk.json");
+  test::expectOneLineError(
+      run("edit " + solid() + " --strokes " + file("junk.json") + " --color 1,0,0 -o " + file("o.tsgs")), 1,
+      "junk.json");
   for (const char* color : {"2,0,0", "#12345g", "red", "1,0"}) {
     SCOPED_TRACE(color);
     test::expectOneLineError(
@@ -227,8 +229,8 @@ TEST_F(GradientCommands, SolidMagnifiesSlicesAndWritesVolumes) {
 }
 
 TEST_F(GradientCommands, SolidRefusesSynthesisFlags) {
-  test::expectOneLineError(
-      run("solid " + solid() + " --method tile-deform --slice z=0.5 -o " + file("s.png")), 2, "--method");
+  test::expectOneLineError(run("solid " + solid() + " --method tile-deform --slice z=0.5 -o " + file("s.png")), 2,
+                           "--method");
   test::expectOneLineError(run("solid " + solid() + " --cell 8 --slice z=0.5 -o " + file("s.png")), 2, "--cell");
   EXPECT_FALSE(std::filesystem::exists(file("s.png")));
 }
