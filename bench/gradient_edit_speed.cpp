@@ -49,26 +49,27 @@ void printEditSpeeds(const GradientSolid& solid, int repeats) {
   const int factor = std::max(1, 512 / std::max(1, solid.voxels.maxCoeff()));
   const GradientSolid large = magnified(solid, factor);
   const Vec3f centre = large.voxels.cast<float>() * 0.5f;
-  const std::vector<EditStroke> strokes = {
-      {{centre - Vec3f(60, 20, 0), centre + Vec3f(60, 20, 0)}, 1.0f},
-      {{centre + Vec3f(-80, 120, 40), centre + Vec3f(80, 140, 40)}, 0.0f}};
+  const std::vector<EditStroke> strokes = {{{centre - Vec3f(60, 20, 0), centre + Vec3f(60, 20, 0)}, 1.0f},
+                                           {{centre + Vec3f(-80, 120, 40), centre + Vec3f(80, 140, 40)}, 0.0f}};
   EditOptions options;
   options.color = Vec3f(0.8f, 0.2f, 0.8f);
   EditReport solidReport, rasterReport;
   double solidSeconds = 1e30;
   for (int r = 0; r < repeats; ++r) {
     GradientSolid edited = large;  // the edit works in place: a fresh copy each time, outside the timing
-    solidSeconds = std::min(solidSeconds, secondsOf([&] { solidReport = editGradientSolid(edited, strokes, options); }));
+    solidSeconds =
+        std::min(solidSeconds, secondsOf([&] { solidReport = editGradientSolid(edited, strokes, options); }));
   }
   Volume raster = rasterizeGradientSolid(large);
   const double rasterSeconds = secondsOf([&] { rasterReport = editVolume(raster, strokes, options); });
-  std::printf("Instant edit (§4.4), %d threads: a %dx%dx%d-equivalent solid (%dx%dx%d control points) and its raster\n\n",
-              threadLimit(), large.voxels.x(), large.voxels.y(), large.voxels.z(), large.controls.x(),
-              large.controls.y(), large.controls.z());
-  std::printf("| edited | stroke voxels | centres | linear program s | update s | total s |\n|---|---:|---:|---:|---:|---:|\n");
-  std::printf("| gradient solid (best of %d) | %d | %d | %.3f | %.3f | %.3f |\n", repeats,
-              solidReport.strokeVoxels, solidReport.centres, solidReport.lpSeconds, solidReport.updateSeconds,
-              solidSeconds);
+  std::printf(
+      "Instant edit (§4.4), %d threads: a %dx%dx%d-equivalent solid (%dx%dx%d control points) and its raster\n\n",
+      threadLimit(), large.voxels.x(), large.voxels.y(), large.voxels.z(), large.controls.x(), large.controls.y(),
+      large.controls.z());
+  std::printf(
+      "| edited | stroke voxels | centres | linear program s | update s | total s |\n|---|---:|---:|---:|---:|---:|\n");
+  std::printf("| gradient solid (best of %d) | %d | %d | %.3f | %.3f | %.3f |\n", repeats, solidReport.strokeVoxels,
+              solidReport.centres, solidReport.lpSeconds, solidReport.updateSeconds, solidSeconds);
   std::printf("| raster volume | %d | %d | %.3f | %.3f | %.3f |\n", rasterReport.strokeVoxels, rasterReport.centres,
               rasterReport.lpSeconds, rasterReport.updateSeconds, rasterSeconds);
   std::printf("\nThe raster edit takes %.0fx the gradient solid's.\n", rasterSeconds / solidSeconds);

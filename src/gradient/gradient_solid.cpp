@@ -244,10 +244,11 @@ void evaluateGradientSolid(const GradientSolid& solid, const Vec3f& point, const
 namespace {
 
 // Batches of points in one region: consecutive points in the same cube (slices, volumes, render spans)
-// reuse its corners. Built for AVX2 as well where the CPU has it (the result is the same bits).
+// reuse its corners.
 template <int Channels>
-__attribute__((target_clones("arch=x86-64-v3", "default"))) void evaluateOneRegion(
-    const GradientSolid& solid, const Vec3f* points, std::size_t count, const TricubicWeightTable* table, float* out) {
+__attribute__((always_inline)) inline void evaluateOneRegion(const GradientSolid& solid, const Vec3f* points,
+                                                             std::size_t count, const TricubicWeightTable* table,
+                                                             float* out) {
   const std::size_t stride = std::size_t(solid.setSize());
   const int channels = Channels ? Channels : solid.channels;
   std::int64_t cube = -1;
@@ -270,6 +271,24 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) void evaluateOneRegi
   }
 }
 
+// GCC also builds these for AVX2 and picks at load time where the CPU has it; the module is compiled
+// without FMA contraction (src/CMakeLists.txt), so both give the same bits.
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+#define TEXSYNTH_AVX2_CLONE __attribute__((target_clones("arch=x86-64-v3", "default")))
+#else
+#define TEXSYNTH_AVX2_CLONE
+#endif
+
+TEXSYNTH_AVX2_CLONE void evaluateRgb(const GradientSolid& solid, const Vec3f* points, std::size_t count,
+                                     const TricubicWeightTable* table, float* out) {
+  evaluateOneRegion<3>(solid, points, count, table, out);
+}
+
+TEXSYNTH_AVX2_CLONE void evaluateAnyChannels(const GradientSolid& solid, const Vec3f* points, std::size_t count,
+                                             const TricubicWeightTable* table, float* out) {
+  evaluateOneRegion<0>(solid, points, count, table, out);
+}
+
 }  // namespace
 
 void evaluateGradientSolid(const GradientSolid& solid, std::span<const Vec3f> points,
@@ -280,11 +299,9 @@ void evaluateGradientSolid(const GradientSolid& solid, std::span<const Vec3f> po
     for (std::size_t n = 0; n < points.size(); ++n)
       evaluateGradientSolid(solid, points[n], options, out + n * std::size_t(solid.channels));
   } else if (solid.channels == 3) {
-    evaluateOneRegion<3>(solid, points.data(), points.size(), options.table, out);
-  } else if (solid.channels == 1) {
-    evaluateOneRegion<1>(solid, points.data(), points.size(), options.table, out);
+    evaluateRgb(solid, points.data(), points.size(), options.table, out);
   } else {
-    evaluateOneRegion<0>(solid, points.data(), points.size(), options.table, out);
+    evaluateAnyChannels(solid, points.data(), points.size(), options.table, out);
   }
 }
 
