@@ -37,6 +37,8 @@ done
 "$t" image "$out/crop.png" --method tile-deform --lambda 0 --size 200 -o "$out/crop_tiled_before.png" --quiet --tileable never
 "$t" image "$out/crop.png" --method tile-deform --lambda 0 --size 200 -o "$out/crop_tiled_after.png" --quiet --tileable always
 rm "$out/crop.png"
+# Gradient solids: vectorization with and without a mask, --optimize, an edit, residual detail.
+bash scripts/gallery-gradient.sh "$build" "$out"
 # Lazy solid synthesis of the burlap weave on the bunny, identity field and sketched field, each
 # with the bunny cut open (about 3 and 17 minutes on 2 cores).
 lazy=(solid $p/Fabric/burlap.pat --method lazy --mesh $m/bunny00.off --tiles 2 --cut z=0.55 --render-size 500 --views 2 --quiet)

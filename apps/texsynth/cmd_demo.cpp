@@ -1,7 +1,8 @@
 // texsynth demo: a tour on built-in defaults. Analyses a real exemplar (GIMP's pink marble from
 // gimp-data), renders a real mesh (CGAL's bunny from libcgal-demo), measures the plain-tiling
-// baseline the synthesizers must beat, and writes a short report with pictures. Falls back to
-// built-in procedural data when those packages are absent.
+// baseline the synthesizers must beat, vectorizes and edits a small gradient solid (demo_gradient.cpp),
+// and writes a short report with pictures. Falls back to built-in procedural data when those
+// packages are absent.
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -10,6 +11,7 @@
 
 #include "cli_common.h"
 #include "demo_fallbacks.h"
+#include "demo_gradient.h"
 #include "image_layout.h"
 #include "number_checks.h"
 #include "texsynth/core/atomic_file.h"
@@ -119,7 +121,8 @@ std::string markdownReport(const json& r) {
      << " | " << fixed3(m["completeness"]) << " | " << fixed3(m["histogram"]) << " | " << fixed3(m["periodicity"])
      << " |\n\n";
   md << "Tiling copies the exemplar, so coherence is near 0, but its periodicity is high: a good synthesis keeps "
-        "coherence low and brings periodicity near 0.\n";
+        "coherence low and brings periodicity near 0.\n\n";
+  md << gradientMarkdown(r["gradient"]);
   return md.str();
 }
 
@@ -218,19 +221,27 @@ void runDemo(const DemoArgs& args, const GlobalOptions& globals) {
                                {"periodicity", tiling.periodicity},
                                {"seconds", tiling.seconds}};
 
+  progress->begin("gradient solids", 1);
+  report["gradient"] = demoGradientSolids(exemplar, globals.seed, out);
+  progress->advance(1);
+  progress->end();
+
   writeFileAtomically(out("report.json"), report.dump(2) + "\n");
   writeFileAtomically(out("report.md"), markdownReport(report));
   if (globals.json) printJson(report);
-  say(globals, "wrote " + out("report.md") + " with exemplar.png, gaussian_stack.png, mesh.png, mesh_solid.png");
+  say(globals, "wrote " + out("report.md") +
+                   " with exemplar.png, gaussian_stack.png, mesh.png, mesh_solid.png, gradient_magnified.png, "
+                   "gradient_edit.png and gradient_solid.tsgs");
 }
 
 }  // namespace
 
 Command registerDemoCommand(CLI::App& app, const GlobalOptions& globals) {
-  auto* sub =
-      app.add_subcommand("demo",
-                         "A tour on built-in defaults: analyse a real exemplar (GIMP's pink marble), render a real "
-                         "mesh (CGAL's bunny) plain and solid-textured, and write a report with pictures into DIR");
+  auto* sub = app.add_subcommand(
+      "demo",
+      "A tour on built-in defaults: analyse a real exemplar (GIMP's pink marble), render a real "
+      "mesh (CGAL's bunny) plain and solid-textured, vectorize and edit a small gradient solid, and write a "
+      "report with pictures into DIR");
   auto args = std::make_shared<DemoArgs>();
   sub->add_option("-o,--output", args->outputDir, "Directory for the report and pictures")->capture_default_str();
   inputFiles(sub->add_option("--exemplar", args->exemplar,
