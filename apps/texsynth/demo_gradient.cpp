@@ -23,10 +23,10 @@ using nlohmann::json;
 
 namespace {
 
-constexpr int kVoxels = 96;   // small enough for a few seconds on 2 cores, big enough to show structure
-constexpr int kMagnify = 4;   // the paper's comparisons magnify 4x (Figs. 6, 14)
+constexpr int kVoxels = 96;  // small enough for a few seconds on 2 cores, big enough to show structure
+constexpr int kMagnify = 4;  // the paper's comparisons magnify 4x (Figs. 6, 14)
 constexpr int kSlice = kVoxels / 2;
-constexpr int kStrokeHalf = 6;  // stroke half-length in voxels
+constexpr int kStrokeHalf = 6;                // stroke half-length in voxels
 const Vec3f kEditColor(0.12f, 0.42f, 0.62f);  // a blue far from any marble, so the edit shows
 // More local than the paper's 1e-4: the marble's colours are all close, and 1e-4 turns it all blue.
 constexpr float kEditAlpha = 1e-3f;
@@ -126,16 +126,16 @@ json demoGradientSolids(const Image& exemplar, std::uint64_t seed,
     VectorizeReport fit;
     solids[optimize] = vectorizeVolume(volume, Volume(), options, &fit);
     const double bytes = double(gradientSolidFileBytes(solids[optimize]));
-    report[optimize ? "optimized" : "first_order"] = {{"rms_error_255", fit.rms},
-                                                      {"seconds", fit.totalSeconds},
-                                                      {"file_bytes", bytes},
-                                                      {"percent_of_raw", 100.0 * bytes / double(rawVolumeBytes(solids[optimize]))}};
+    report[optimize ? "optimized" : "first_order"] = {
+        {"rms_error_255", fit.rms},
+        {"seconds", fit.totalSeconds},
+        {"file_bytes", bytes},
+        {"percent_of_raw", 100.0 * bytes / double(rawVolumeBytes(solids[optimize]))}};
   }
   writeGradientSolid(out("gradient_solid.tsgs"), solids[1]);
-  writeImage(out("gradient_magnified.png"),
-             sideBySide({magnifiedVoxels(volume, kSlice, kMagnify), magnifiedSlice(solids[0], box),
-                         magnifiedSlice(solids[1], box)},
-                        8));
+  writeImage(out("gradient_magnified.png"), sideBySide({magnifiedVoxels(volume, kSlice, kMagnify),
+                                                        magnifiedSlice(solids[0], box), magnifiedSlice(solids[1], box)},
+                                                       8));
 
   // Instant edit of the optimized solid against the same edit voxel by voxel.
   const std::vector<EditStroke> strokes = demoStrokes(volume);
@@ -179,17 +179,19 @@ std::string gradientMarkdown(const json& g) {
   md << "The central z slice magnified " << m << "x: the voxels (each a " << m << "x" << m
      << " block), the first-order fit and the optimized fit, both sampled at " << m
      << "x the voxel rate: smooth (C1) at any magnification, but features a voxel or two wide soften, since a "
-        "control point every 4 voxels cannot hold them all. The optimized solid is `gradient_solid.tsgs`: try `texsynth solid gradient_solid.tsgs "
+        "control point every 4 voxels cannot hold them all. The optimized solid is `gradient_solid.tsgs`: try "
+        "`texsynth solid gradient_solid.tsgs "
         "--slice z=0.5 --resolution 1024 -o big.png`.\n\n";
   const json& e = g["edit"];
   md << "![before and after the edit](gradient_edit.png)\n\n";
   md << "Instant edit (`texsynth edit`): a stroke on the slice's darkest voxels asks for the blue, a white stroke "
         "on its lightest protects them; the edit spreads to points of similar colour and position (alpha = "
-     << number(g["edit"]["alpha"].get<double>(), "%g") << "). "
-     << e["stroke_voxels"] << " stroke voxels; the linear program took " << number(1e3 * e["lp_seconds"].get<double>(), "%.1f")
+     << number(g["edit"]["alpha"].get<double>(), "%g") << "). " << e["stroke_voxels"]
+     << " stroke voxels; the linear program took " << number(1e3 * e["lp_seconds"].get<double>(), "%.1f")
      << " ms and updating the " << e["controls"] << " control points "
      << number(1e3 * e["update_seconds"].get<double>(), "%.1f") << " ms, against "
-     << number(1e3 * e["raster_update_seconds"].get<double>(), "%.1f") << " ms to update the " << n << "³ voxels one by one.\n";
+     << number(1e3 * e["raster_update_seconds"].get<double>(), "%.1f") << " ms to update the " << n
+     << "³ voxels one by one.\n";
   return md.str();
 }
 

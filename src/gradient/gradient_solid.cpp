@@ -236,8 +236,10 @@ void evaluateGradientSolid(const GradientSolid& solid, const Vec3f& point, const
     cornerSets(solid.detail, setSize, corners, sets);
     accumulate(weights, channels, sets, sigma);
     const std::uint64_t cell = latticeId(std::lround(point.x()), std::lround(point.y()), std::lround(point.z()));
-    for (int c = 0; c < channels; ++c)
-      out[c] += std::max(sigma[c], 0.0f) * gaussianFromKey(hashKey(options.detailSeed, cell, std::uint64_t(c)));
+    // One draw for all channels: texture grain is mostly light and dark, and independent draws per
+    // channel would show as coloured speckle.
+    const float grain = gaussianFromKey(hashKey(options.detailSeed, cell));
+    for (int c = 0; c < channels; ++c) out[c] += std::max(sigma[c], 0.0f) * grain;
   }
 }
 

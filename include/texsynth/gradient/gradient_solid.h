@@ -8,7 +8,7 @@
 // same way; control points next to a sign change hold a second feature set for the negative side, and
 // a point takes the set of its interpolated sign, so boundaries stay sharp at any magnification.
 // Residual detail (§5.4): optionally a per-channel standard deviation sigma, also tricubic, from which
-// deterministic Gaussian grain is added at evaluation.
+// deterministic Gaussian grain is added at evaluation (one draw per voxel, scaled per channel).
 //
 // Coordinates are the equivalent raster's voxel units: control (i,j,k) sits at (i,j,k) * spacing, and
 // voxel (x,y,z) of the raster the solid stands for is the point (x,y,z). Colours are in [0,1].
