@@ -82,6 +82,18 @@ std::vector<float> fitDetail(const GradientSolid& solid, const Volume& colors, c
   return sets;
 }
 
+// 1 where the solid's distance puts a voxel on the positive side (as evaluation decides), else 0.
+Volume evaluatedSides(const GradientSolid& solid) {
+  Volume sides(solid.voxels.x(), solid.voxels.y(), solid.voxels.z(), 1);
+  parallelFor(0, sides.nz, [&](std::int64_t z) {
+    for (int y = 0; y < sides.ny; ++y)
+      for (int x = 0; x < sides.nx; ++x)
+        sides.at(x, y, int(z), 0) =
+            evaluateGradientDistance(solid, Vec3f(float(x), float(y), float(z))) >= 0.0f ? 1.0f : 0.0f;
+  });
+  return sides;
+}
+
 }  // namespace
 
 GradientSolid vectorizeVolume(const Volume& volume, const Volume& mask, const VectorizeOptions& options,
@@ -102,20 +114,27 @@ GradientSolid vectorizeVolume(const Volume& volume, const Volume& mask, const Ve
     solid.positive = fitSets(plain, targets, options, local.optimizeSeconds);
     progress.advance(2);
   } else {
-    const Regions regions = separateRegions(grid, colors, mask);
-    progress.advance(1);
+    // The distance first, always refined by eq. 3: a voxel on the wrong side costs a whole colour jump, and
+    // one channel is cheap next to the colours. Kept to 3 cubes: enough for the sign near the boundary.
+    const Volume signedDistance = signedDistanceVolume(mask, 3.0f * float(options.spacing));
     FitLayout distanceLayout{grid, 1, {}, nullptr, 0};
     FitTargets distanceTargets;
-    distanceTargets.original = &regions.signedDistance;
-    // The distance is always refined by eq. 3: a voxel on the wrong side costs a whole colour jump, and
-    // one channel is cheap next to the colours.
+    distanceTargets.original = &signedDistance;
     VectorizeOptions distanceOptions = options;
     distanceOptions.optimize = true;
     double distanceSeconds = 0;
     solid.distance = fitSets(distanceLayout, distanceTargets, distanceOptions, distanceSeconds);
+    solid.negativeIndex.assign(controls, -1);
+    if (options.quantize) quantizeGradientSolid(solid);  // the distance as stored decides the sides
+    // The colours are fitted to the regions evaluation will use: the sides of the fitted distance, which
+    // differ from the mask's at a few voxels along the boundary.
+    const Volume sides = evaluatedSides(solid);
+    const Regions regions = separateRegions(grid, colors, sides);
+    progress.advance(1);
     FitLayout separated{grid, colors.channels, regions.cubeSides, &regions.negativeIndex, regions.negatives};
     targets.positive = &regions.positive;
     targets.negative = &regions.negative;
+    targets.sides = &sides;
     std::vector<float> sets = fitSets(separated, targets, options, local.optimizeSeconds);
     solid.positive.assign(sets.begin(), sets.begin() + std::ptrdiff_t(controls * setSize));
     solid.negative.assign(sets.begin() + std::ptrdiff_t(controls * setSize), sets.end());

@@ -11,7 +11,9 @@ namespace {
 // still gives a well-posed system; 1e-3 of the sample count changes nothing measurable elsewhere.
 constexpr double kGradientDamping = 1e-3;
 
-void fitSet(const ControlGrid& grid, int i, int j, int k, const Volume& samples, int channels, float* set) {
+// `sides` and `sign`: with regions, voxels evaluation puts on the other side weigh kExtendedWeight.
+void fitSet(const ControlGrid& grid, int i, int j, int k, const Volume& samples, int channels, float* set,
+            const Volume* sides = nullptr, int sign = 0) {
   const int index[3] = {i, j, k};
   int begin[3], end[3];
   for (int a = 0; a < 3; ++a) begin[a] = grid.ownedBegin(a, index[a]), end[a] = grid.ownedEnd(a, index[a]);
@@ -23,9 +25,10 @@ void fitSet(const ControlGrid& grid, int i, int j, int k, const Volume& samples,
       for (int x = begin[0]; x < end[0]; ++x) {
         const Eigen::Vector4d basis(1.0, (x - i * grid.spacing) * inverse, (y - j * grid.spacing) * inverse,
                                     (z - k * grid.spacing) * inverse);
-        normal.noalias() += basis * basis.transpose();
+        const double weight = sides && (sides->at(x, y, z, 0) > 0.5f) != (sign > 0) ? double(kExtendedWeight) : 1.0;
+        normal.noalias() += weight * basis * basis.transpose();
         const float* value = samples.voxel(x, y, z);
-        for (int c = 0; c < channels; ++c) rhs.col(c) += basis * double(value[c]);
+        for (int c = 0; c < channels; ++c) rhs.col(c) += weight * basis * double(value[c]);
       }
   const double count = normal(0, 0);
   for (int a = 1; a < 4; ++a) normal(a, a) += kGradientDamping * count;
@@ -51,8 +54,10 @@ void fitFirstOrder(const FitLayout& layout, const FitTargets& targets, std::vect
         if (negativeSlot == control) {
           fitSet(grid, i, j, int(k), *targets.original, channels, &unknowns[std::size_t(control) * setSize]);
         } else {  // next to the boundary: one set per side, each from its side's dilated samples (§4.3)
-          fitSet(grid, i, j, int(k), targets.forSide(1), channels, &unknowns[std::size_t(control) * setSize]);
-          fitSet(grid, i, j, int(k), targets.forSide(-1), channels, &unknowns[std::size_t(negativeSlot) * setSize]);
+          fitSet(grid, i, j, int(k), targets.forSide(1), channels, &unknowns[std::size_t(control) * setSize],
+                 targets.sides, 1);
+          fitSet(grid, i, j, int(k), targets.forSide(-1), channels, &unknowns[std::size_t(negativeSlot) * setSize],
+                 targets.sides, -1);
         }
       }
   });

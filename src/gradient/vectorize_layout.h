@@ -65,8 +65,12 @@ struct FitTargets {
   const Volume* original = nullptr;
   const Volume* positive = nullptr;  // null without regions
   const Volume* negative = nullptr;
+  const Volume* sides = nullptr;  // with regions: 1 where evaluation takes the positive side, else 0
   const Volume& forSide(int sign) const { return sign > 0 ? *positive : *negative; }
 };
+
+// How much a value carried across the boundary counts next to a voxel of the side itself.
+inline constexpr float kExtendedWeight = 0.1f;
 
 // Eq. 2 at every control point: first-order least squares over the voxels nearest to it, into
 // `unknowns` (layout.slots() sets of 4 * channels floats).

@@ -56,8 +56,15 @@ class Refiner {
     std::vector<float> diagonal(rows, 0.0f), b(rows * channels, 0.0f), r(rows * channels), z(rows * channels),
         p(rows * channels), q(rows * channels);
     rightHandSide(b);
-    forEachCubeLayer([&](const std::int64_t* slots, int pattern, int, int, int, int) {
-      for (int w = 0; w < 32; ++w) diagonal[std::size_t(slots[w / 4]) * 4 + w % 4] += gram_[pattern](w, w);
+    forEachCubeLayer([&](const std::int64_t* slots, int pattern, int sign, int i, int j, int k) {
+      if (sign == 0) {
+        for (int w = 0; w < 32; ++w) diagonal[std::size_t(slots[w / 4]) * 4 + w % 4] += gram_[pattern](w, w);
+        return;
+      }
+      forEachSample(i, j, k, sign, [&](const float* weights, float weight, int, int, int) {
+        for (int w = 0; w < 32; ++w)
+          diagonal[std::size_t(slots[w / 4]) * 4 + w % 4] += weight * weights[w] * weights[w];
+      });
     });
     for (float& d : diagonal) d = d > 0 ? 1.0f / d : 0.0f;
     apply(x, q);
@@ -131,25 +138,39 @@ class Refiner {
     }
   }
 
+  // Calls f(32 weights, sample weight, x, y, z) for every voxel of cube (i,j,k). On a side of a cube the
+  // boundary crosses (sign != 0), the voxels evaluation puts on that side weigh 1 and the values carried
+  // over from the other side (dilation) only kExtendedWeight: they keep the set defined where the side
+  // has few voxels, without pulling it away from the voxels it really colours.
+  template <typename F>
+  void forEachSample(int i, int j, int k, int sign, F f) const {
+    const ControlGrid& grid = layout_.grid;
+    const auto &bx = axes_[0].basis[std::size_t(i)], &by = axes_[1].basis[std::size_t(j)],
+               &bz = axes_[2].basis[std::size_t(k)];
+    float weights[32];
+    for (std::size_t z = 0; z < bz.size(); ++z)
+      for (std::size_t y = 0; y < by.size(); ++y)
+        for (std::size_t x = 0; x < bx.size(); ++x) {
+          tricubicWeights(bx[x], by[y], bz[z], weights);
+          const int vx = grid.cubeBegin(0, i) + int(x), vy = grid.cubeBegin(1, j) + int(y),
+                    vz = grid.cubeBegin(2, k) + int(z);
+          float weight = 1.0f;
+          if (sign != 0 && (targets_.sides->at(vx, vy, vz, 0) > 0.5f) != (sign > 0)) weight = kExtendedWeight;
+          f(weights, weight, vx, vy, vz);
+        }
+  }
+
   // b = W^T y over every cube and side.
   void rightHandSide(std::vector<float>& b) const {
     const int channels = Channels ? Channels : layout_.channels;
-    const ControlGrid& grid = layout_.grid;
     forEachCubeLayer([&](const std::int64_t* slots, int, int sign, int i, int j, int k) {
       const Volume& samples = sign == 0 ? *targets_.original : targets_.forSide(sign);
       float local[32 * 4] = {};
-      float weights[32];
-      const auto &bx = axes_[0].basis[std::size_t(i)], &by = axes_[1].basis[std::size_t(j)],
-                 &bz = axes_[2].basis[std::size_t(k)];
-      for (std::size_t z = 0; z < bz.size(); ++z)
-        for (std::size_t y = 0; y < by.size(); ++y)
-          for (std::size_t x = 0; x < bx.size(); ++x) {
-            tricubicWeights(bx[x], by[y], bz[z], weights);
-            const float* value = samples.voxel(grid.cubeBegin(0, i) + int(x), grid.cubeBegin(1, j) + int(y),
-                                               grid.cubeBegin(2, k) + int(z));
-            for (int w = 0; w < 32; ++w)
-              for (int c = 0; c < channels; ++c) local[w * channels + c] += weights[w] * value[c];
-          }
+      forEachSample(i, j, k, sign, [&](const float* weights, float weight, int x, int y, int z) {
+        const float* value = samples.voxel(x, y, z);
+        for (int w = 0; w < 32; ++w)
+          for (int c = 0; c < channels; ++c) local[w * channels + c] += weight * weights[w] * value[c];
+      });
       for (int w = 0; w < 32; ++w)
         for (int c = 0; c < channels; ++c)
           b[(std::size_t(slots[w / 4]) * 4 + std::size_t(w % 4)) * channels + std::size_t(c)] +=
@@ -163,12 +184,23 @@ class Refiner {
     using Block = Eigen::Matrix<float, 32, Channels ? Channels : Eigen::Dynamic,
                                 Channels == 1 ? Eigen::ColMajor : Eigen::RowMajor, 32, Channels ? Channels : 4>;
     std::fill(out.begin(), out.end(), 0.0f);
-    forEachCubeLayer([&](const std::int64_t* slots, int pattern, int, int, int, int) {
+    forEachCubeLayer([&](const std::int64_t* slots, int pattern, int sign, int i, int j, int k) {
       Block gathered(32, channels), product(32, channels);
       for (int w = 0; w < 32; ++w)
         for (int c = 0; c < channels; ++c)
           gathered(w, c) = in[(std::size_t(slots[w / 4]) * 4 + std::size_t(w % 4)) * channels + std::size_t(c)];
-      product.noalias() = gram_[pattern].lazyProduct(gathered);
+      if (sign == 0) {
+        product.noalias() = gram_[pattern].lazyProduct(gathered);
+      } else {  // weighted samples: W^T diag(weight) W, voxel by voxel
+        product.setZero();
+        forEachSample(i, j, k, sign, [&](const float* weights, float weight, int, int, int) {
+          float value[4] = {0, 0, 0, 0};
+          for (int w = 0; w < 32; ++w)
+            for (int c = 0; c < channels; ++c) value[c] += weights[w] * gathered(w, c);
+          for (int w = 0; w < 32; ++w)
+            for (int c = 0; c < channels; ++c) product(w, c) += weight * weights[w] * value[c];
+        });
+      }
       for (int w = 0; w < 32; ++w)
         for (int c = 0; c < channels; ++c)
           out[(std::size_t(slots[w / 4]) * 4 + std::size_t(w % 4)) * channels + std::size_t(c)] += product(w, c);

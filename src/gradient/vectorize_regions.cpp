@@ -111,12 +111,9 @@ Volume dilateSide(const Volume& colors, const Volume& mask, int sign, int rings)
 
 }  // namespace
 
-Regions separateRegions(const ControlGrid& grid, const Volume& colors, const Volume& mask) {
+Regions separateRegions(const ControlGrid& grid, const Volume& colors, const Volume& sides) {
   Regions regions;
-  // Distances are kept to 3 cubes: enough for the sign near the boundary, and small numbers to store.
-  const float limit = 3.0f * float(grid.spacing);
-  regions.signedDistance = signedDistanceVolume(mask, limit);
-  regions.cubeSides = cubeSidesOf(grid, mask);
+  regions.cubeSides = cubeSidesOf(grid, sides);
   regions.negativeIndex.assign(std::size_t(grid.controlCount()), -1);
   for (int k = 0; k < grid.cubes(2); ++k)
     for (int j = 0; j < grid.cubes(1); ++j)
@@ -130,8 +127,8 @@ Regions separateRegions(const ControlGrid& grid, const Volume& colors, const Vol
     if (index == 0) index = std::int32_t(regions.negatives++);
   // A boundary control's bucket reaches 1.5 cubes (Chebyshev) from the boundary.
   const int rings = (3 * grid.spacing + 1) / 2 + 1;
-  regions.positive = dilateSide(colors, mask, 1, rings);
-  regions.negative = dilateSide(colors, mask, -1, rings);
+  regions.positive = dilateSide(colors, sides, 1, rings);
+  regions.negative = dilateSide(colors, sides, -1, rings);
   return regions;
 }
 

@@ -9,14 +9,14 @@
 namespace texsynth::vectorize_detail {
 
 struct Regions {
-  Volume signedDistance;                    // voxels, positive inside the mask, clamped
   std::vector<CubeSides> cubeSides;         // per cube
   std::vector<std::int32_t> negativeIndex;  // per control: its negative set, or -1
   std::int64_t negatives = 0;
   Volume positive, negative;  // each side's values carried across the boundary
 };
 
-// The cubes the mask's boundary crosses, their corners' second sets, and the dilated targets.
-Regions separateRegions(const ControlGrid& grid, const Volume& colors, const Volume& mask);
+// The cubes the regions' boundary crosses, their corners' second sets, and the dilated targets. `sides`
+// (> 0.5: positive) says which side evaluation puts each voxel on: the sign of the fitted distance.
+Regions separateRegions(const ControlGrid& grid, const Volume& colors, const Volume& sides);
 
 }  // namespace texsynth::vectorize_detail
