@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "number_checks.h"
+#include "texsynth/core/atomic_file.h"
 #include "texsynth/core/error.h"
 #include "texsynth/image/window_support.h"
 
@@ -163,6 +164,15 @@ double processPeakResidentMiB() {
 
 void say(const GlobalOptions& globals, const std::string& message) {
   if (!globals.quiet) std::fprintf(stderr, "%s\n", message.c_str());
+}
+
+void finishReport(const GlobalOptions& globals, const nlohmann::json& report, const std::string& statsFile,
+                  const std::string& summary) {
+  if (!statsFile.empty()) writeFileAtomically(statsFile, report.dump(2) + "\n");
+  if (globals.json)
+    printJson(report);
+  else
+    say(globals, summary);
 }
 
 }  // namespace texsynth::cli

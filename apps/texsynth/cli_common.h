@@ -93,6 +93,11 @@ void checkFileArguments(const CLI::App& subcommand);
 // Short human-readable message on stderr, unless --quiet.
 void say(const GlobalOptions& globals, const std::string& message);
 
+// A command's result: written to `statsFile` as JSON when one is given, then printed as JSON on stdout with
+// --json, else `summary` on stderr.
+void finishReport(const GlobalOptions& globals, const nlohmann::json& report, const std::string& statsFile,
+                  const std::string& summary);
+
 // The subcommands; each lives in its own cmd_<name>.cpp.
 Command registerDemoCommand(CLI::App& app, const GlobalOptions& globals);
 Command registerEvalCommand(CLI::App& app, const GlobalOptions& globals);

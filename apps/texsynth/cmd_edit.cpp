@@ -104,18 +104,13 @@ Command registerEditCommand(CLI::App& app, const GlobalOptions& globals) {
                                         {"update_seconds", report.updateSeconds},
                                         {"mean_strength_deviation", report.strengthDeviation},
                                         {"controls", solid.controlCount()}};
-            if (!args->stats.empty()) writeFileAtomically(args->stats, out.dump(2) + "\n");
-            if (globals.json) {
-              printJson(out);
-              return;
-            }
             char line[256];
             std::snprintf(line, sizeof line,
                           "wrote %s: %d stroke voxels, %d centres, linear program %.3f s, update %.3f s, mean strength "
                           "deviation %.3f",
                           args->output.c_str(), report.strokeVoxels, report.centres, report.lpSeconds,
                           report.updateSeconds, report.strengthDeviation);
-            say(globals, line);
+            finishReport(globals, out, args->stats, line);
           },
           sources, ""};
 }

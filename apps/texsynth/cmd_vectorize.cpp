@@ -90,16 +90,11 @@ Command registerVectorizeCommand(CLI::App& app, const GlobalOptions& globals) {
                                   {"file_bytes", bytes},
                                   {"raw_volume_bytes", raw},
                                   {"percent_of_raw", 100.0 * bytes / raw}};
-            if (!args->stats.empty()) writeFileAtomically(args->stats, out.dump(2) + "\n");
-            if (globals.json) {
-              printJson(out);
-              return;
-            }
             char line[256];
             std::snprintf(line, sizeof line,
                           "wrote %s: RMS error %.2f (0..255), %.2f s, %.0f bytes = %.1f%% of the raw volume",
                           args->output.c_str(), report.rms, report.totalSeconds, bytes, 100.0 * bytes / raw);
-            say(globals, line);
+            finishReport(globals, out, args->stats, line);
           },
           sources, ""};
 }

@@ -4,9 +4,9 @@
 #include <cstring>
 #include <nlohmann/json.hpp>
 
-#include "json_input.h"
 #include "texsynth/core/atomic_file.h"
 #include "texsynth/core/error.h"
+#include "texsynth/io/json_input.h"
 
 namespace texsynth {
 

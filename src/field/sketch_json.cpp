@@ -3,10 +3,10 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
-#include "json_input.h"
 #include "texsynth/core/atomic_file.h"
 #include "texsynth/core/error.h"
 #include "texsynth/field/sketch.h"
+#include "texsynth/io/json_input.h"
 
 namespace texsynth {
 
@@ -17,22 +17,7 @@ using nlohmann::json;
 // Sketch files are small; anything larger is not one.
 constexpr std::size_t kMaxSketchBytes = std::size_t(64) << 20;
 
-struct Reader {
-  const std::string& source;
-  [[noreturn]] void fail(const std::string& where, const std::string& problem) const {
-    throw InputError(source, where + ": " + problem);
-  }
-  void onlyKeys(const json& object, const std::string& where, const std::set<std::string>& allowed) const {
-    if (!object.is_object()) fail(where, "must be an object");
-    for (const auto& item : object.items())
-      if (!allowed.count(item.key())) fail(where, "unknown key '" + item.key() + "'");
-  }
-  Vec3f vec3(const json& value, const std::string& where) const {
-    if (!value.is_array() || value.size() != 3) fail(where, "must be an array of 3 numbers");
-    Vec3f v;
-    for (int a = 0; a < 3; ++a) v[a] = json_input::finiteFloat(value[a], source, where + "[" + std::to_string(a) + "]");
-    return v;
-  }
+struct Reader : json_input::StrictReader {
   int axis(const json& value, const std::string& where) const {
     if (value.is_string()) {
       std::string s = value.get<std::string>();
@@ -103,7 +88,7 @@ const char* axisName(int axis) {
 
 Sketch parseSketch(std::string_view text, const std::string& source) {
   const json document = json_input::parse(text, source);
-  Reader reader{source};
+  Reader reader{{source}};
   reader.onlyKeys(document, "sketch", {"version", "curves", "scale_points"});
   if (document.contains("version")) json_input::integerIn(document["version"], 1, 1, source, "version");
   if (!document.contains("curves") || !document["curves"].is_array() || document["curves"].empty())

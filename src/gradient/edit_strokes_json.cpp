@@ -3,11 +3,10 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
-// The field module's JSON helpers (syntax errors with line and column, finite 32-bit numbers).
-#include "../field/json_input.h"
 #include "texsynth/core/atomic_file.h"
 #include "texsynth/core/error.h"
 #include "texsynth/gradient/gradient_edit.h"
+#include "texsynth/io/json_input.h"
 
 namespace texsynth {
 namespace {
@@ -17,23 +16,7 @@ using nlohmann::json;
 // Stroke files are small; anything larger is not one.
 constexpr std::size_t kMaxStrokeFileBytes = std::size_t(64) << 20;
 
-struct StrokeReader {
-  const std::string& source;
-
-  [[noreturn]] void fail(const std::string& where, const std::string& problem) const {
-    throw InputError(source, where + ": " + problem);
-  }
-  void onlyKeys(const json& object, const std::string& where, const std::set<std::string>& allowed) const {
-    if (!object.is_object()) fail(where, "must be an object");
-    for (const auto& item : object.items())
-      if (!allowed.count(item.key())) fail(where, "unknown key '" + item.key() + "'");
-  }
-  Vec3f vec3(const json& value, const std::string& where) const {
-    if (!value.is_array() || value.size() != 3) fail(where, "must be an array of 3 numbers");
-    Vec3f v;
-    for (int a = 0; a < 3; ++a) v[a] = json_input::finiteFloat(value[a], source, where + "[" + std::to_string(a) + "]");
-    return v;
-  }
+struct StrokeReader : json_input::StrictReader {
   float unitFloat(const json& value, const std::string& where) const {
     const float v = json_input::finiteFloat(value, source, where);
     if (!(v >= 0.0f && v <= 1.0f)) fail(where, "must be in [0, 1], got " + value.dump());
@@ -58,7 +41,7 @@ struct StrokeReader {
 
 EditStrokeFile parseEditStrokes(std::string_view text, const std::string& source) {
   const json document = json_input::parse(text, source);
-  const StrokeReader reader{source};
+  const StrokeReader reader{{source}};
   if (!document.is_object()) reader.fail("document", "must be an object with \"strokes\"");
   reader.onlyKeys(document, "document", {"version", "color", "strokes"});
   if (document.contains("version")) json_input::integerIn(document["version"], 1, 1, source, "version");

@@ -1,4 +1,4 @@
-#include "json_input.h"
+#include "texsynth/io/json_input.h"
 
 #include <algorithm>
 #include <cmath>
@@ -92,6 +92,24 @@ std::int64_t integerIn(const json& value, std::int64_t lo, std::int64_t hi, cons
     if (hi >= 0 && v <= std::uint64_t(hi) && std::int64_t(v) >= lo) return std::int64_t(v);
   }
   throw InputError(source, where + ": must be " + range + ", not " + quote(value));
+}
+
+void StrictReader::fail(const std::string& where, const std::string& problem) const {
+  throw InputError(source, where + ": " + problem);
+}
+
+void StrictReader::onlyKeys(const nlohmann::json& object, const std::string& where,
+                            const std::set<std::string>& allowed) const {
+  if (!object.is_object()) fail(where, "must be an object");
+  for (const auto& item : object.items())
+    if (!allowed.count(item.key())) fail(where, "unknown key '" + item.key() + "'");
+}
+
+Vec3f StrictReader::vec3(const nlohmann::json& value, const std::string& where) const {
+  if (!value.is_array() || value.size() != 3) fail(where, "must be an array of 3 numbers");
+  Vec3f v;
+  for (int a = 0; a < 3; ++a) v[a] = finiteFloat(value[a], source, where + "[" + std::to_string(a) + "]");
+  return v;
 }
 
 }  // namespace texsynth::json_input
