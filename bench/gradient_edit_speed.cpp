@@ -49,16 +49,17 @@ void printEditSpeeds(const GradientSolid& solid, int repeats) {
   const int factor = std::max(1, 512 / std::max(1, solid.voxels.maxCoeff()));
   const GradientSolid large = magnified(solid, factor);
   const Vec3f centre = large.voxels.cast<float>() * 0.5f;
-  const std::vector<EditStroke> strokes = {{{centre - Vec3f(60, 20, 0), centre + Vec3f(60, 20, 0)}, 1.0f},
-                                           {{centre + Vec3f(-80, 120, 40), centre + Vec3f(80, 140, 40)}, 0.0f}};
+  // One stroke through the middle: the program weighs its centres and the edit reaches every control point.
+  const std::vector<EditStroke> strokes = {{{centre - Vec3f(60, 20, 0), centre + Vec3f(60, 20, 0)}, 1.0f}};
   EditOptions options;
   options.color = Vec3f(0.8f, 0.2f, 0.8f);
   EditReport solidReport, rasterReport;
   double solidSeconds = 1e30;
   for (int r = 0; r < repeats; ++r) {
     GradientSolid edited = large;  // the edit works in place: a fresh copy each time, outside the timing
-    solidSeconds =
-        std::min(solidSeconds, secondsOf([&] { solidReport = editGradientSolid(edited, strokes, options); }));
+    EditReport report;
+    const double seconds = secondsOf([&] { report = editGradientSolid(edited, strokes, options); });
+    if (seconds < solidSeconds) solidSeconds = seconds, solidReport = report;
   }
   Volume raster = rasterizeGradientSolid(large);
   const double rasterSeconds = secondsOf([&] { rasterReport = editVolume(raster, strokes, options); });
@@ -72,7 +73,8 @@ void printEditSpeeds(const GradientSolid& solid, int repeats) {
               solidReport.centres, solidReport.lpSeconds, solidReport.updateSeconds, solidSeconds);
   std::printf("| raster volume | %d | %d | %.3f | %.3f | %.3f |\n", rasterReport.strokeVoxels, rasterReport.centres,
               rasterReport.lpSeconds, rasterReport.updateSeconds, rasterSeconds);
-  std::printf("\nThe raster edit takes %.0fx the gradient solid's.\n", rasterSeconds / solidSeconds);
+  std::printf("\nThe raster edit takes %.0fx the gradient solid's (mean strength deviation %.3f and %.3f).\n",
+              rasterSeconds / solidSeconds, solidReport.strengthDeviation, rasterReport.strengthDeviation);
 }
 
 }  // namespace texsynth::bench

@@ -39,66 +39,66 @@ void cornerIndices(const GradientSolid& solid, const CubeLocation& at, std::int6
   for (int p = 0; p < 8; ++p) corners[p] = base + (p & 1) + ((p >> 1) & 1) * dy + ((p >> 2) & 1) * dz;
 }
 
-// The tricubic sum over the 8 corners' sets, axis by axis: the x sums first, then y, then z (48
-// multiply-adds per channel instead of 96 plus the 64 products of the 32 weights). h* are the axes'
-// Hermite functions. Channels is the channel count when fixed at compile time, else 0.
-template <int Channels>
-void separableSum(const Hermite& hu, const Hermite& hv, const Hermite& hw, int channels, const float* const* sets,
-                  float* out) {
-  const int n = Channels ? Channels : channels;
-  for (int c = 0; c < n; ++c) {
-    float values[2], slopesW[2];  // per z: the x-y sums of values and of d/dw
-    for (int z = 0; z < 2; ++z) {
-      float a[2], b[2], w[2];  // per y: x sums of values (with d/du), of d/dv, of d/dw
-      for (int y = 0; y < 2; ++y) {
-        const float *s0 = sets[2 * y + 4 * z], *s1 = sets[1 + 2 * y + 4 * z];
-        a[y] = hu[0] * s0[c] + hu[1] * s1[c] + hu[2] * s0[n + c] + hu[3] * s1[n + c];
-        b[y] = hu[0] * s0[2 * n + c] + hu[1] * s1[2 * n + c];
-        w[y] = hu[0] * s0[3 * n + c] + hu[1] * s1[3 * n + c];
-      }
-      values[z] = hv[0] * a[0] + hv[1] * a[1] + hv[2] * b[0] + hv[3] * b[1];
-      slopesW[z] = hv[0] * w[0] + hv[1] * w[1];
-    }
-    out[c] = hw[0] * values[0] + hw[1] * values[1] + hw[2] * slopesW[0] + hw[3] * slopesW[1];
-  }
-}
-
-// The same for RGB with the three channels side by side in 4-float vectors: each slot's 3 values are one
-// unaligned load from its set (the vectors' last lane is never used), so the sum is 48 vector
-// multiply-adds.
+// The tricubic sum over a cube's 8 corner sets, contracted axis by axis: first over y and z, leaving
+// per channel 4 coefficients of the x axis' Hermite functions (the x values at both corners and the x
+// slopes), then over x. Points of a row share y and z, so a row inside one cube computes the
+// coefficients once and then costs 4 multiply-adds per channel and point. Channels (1 to 4) sit side by
+// side in 4-float vectors, each slot of a set one load.
 using Float4 = float __attribute__((vector_size(16)));
 
+template <int Channels>
 inline Float4 loadSlot(const float* set, int slot) {
   Float4 v = {0, 0, 0, 0};
-  std::memcpy(&v, set + 3 * slot, slot < 3 ? 16 : 12);  // slot 3 ends the set: 3 floats only
+  // A set ends with slot 3: read only its own channels there (RGB elsewhere reads one float more).
+  std::memcpy(&v, set + Channels * slot, (Channels == 3 && slot < 3 ? 4 : Channels) * sizeof(float));
   return v;
 }
 
-__attribute__((always_inline)) inline void separableSumRgb(const Hermite& hu, const Hermite& hv, const Hermite& hw,
-                                                           const float* const* sets, float* out) {
-  Float4 values[2], slopesW[2];
-  for (int z = 0; z < 2; ++z) {
-    Float4 a[2], b[2], w[2];
-    for (int y = 0; y < 2; ++y) {
-      const float *s0 = sets[2 * y + 4 * z], *s1 = sets[1 + 2 * y + 4 * z];
-      a[y] = hu[0] * loadSlot(s0, 0) + hu[1] * loadSlot(s1, 0) + hu[2] * loadSlot(s0, 1) + hu[3] * loadSlot(s1, 1);
-      b[y] = hu[0] * loadSlot(s0, 2) + hu[1] * loadSlot(s1, 2);
-      w[y] = hu[0] * loadSlot(s0, 3) + hu[1] * loadSlot(s1, 3);
-    }
-    values[z] = hv[0] * a[0] + hv[1] * a[1] + hv[2] * b[0] + hv[3] * b[1];
-    slopesW[z] = hv[0] * w[0] + hv[1] * w[1];
+struct XCoefficients {
+  Float4 value[2], slope[2];  // per x corner: what multiplies its value function, its slope function
+};
+
+template <int Channels>
+__attribute__((always_inline)) inline XCoefficients contractYZ(const Hermite& hv, const Hermite& hw,
+                                                               const float* const* sets) {
+  XCoefficients e;
+  for (int x = 0; x < 2; ++x) {
+    Float4 value = {0, 0, 0, 0}, slope = {0, 0, 0, 0};
+    for (int z = 0; z < 2; ++z)
+      for (int y = 0; y < 2; ++y) {
+        const float* set = sets[x + 2 * y + 4 * z];
+        const float both = hv[y] * hw[z];
+        value += both * loadSlot<Channels>(set, 0) + (hv[2 + y] * hw[z]) * loadSlot<Channels>(set, 2) +
+                 (hv[y] * hw[2 + z]) * loadSlot<Channels>(set, 3);
+        slope += both * loadSlot<Channels>(set, 1);
+      }
+    e.value[x] = value, e.slope[x] = slope;
   }
-  const Float4 sum = hw[0] * values[0] + hw[1] * values[1] + hw[2] * slopesW[0] + hw[3] * slopesW[1];
-  out[0] = sum[0], out[1] = sum[1], out[2] = sum[2];
+  return e;
+}
+
+template <int Channels>
+__attribute__((always_inline)) inline void contractX(const Hermite& hu, const XCoefficients& e, float* out) {
+  const Float4 sum = hu[0] * e.value[0] + hu[1] * e.value[1] + hu[2] * e.slope[0] + hu[3] * e.slope[1];
+  for (int c = 0; c < Channels; ++c) out[c] = sum[c];
+}
+
+template <int Channels>
+void sumCorners(const Hermite* axes, const float* const* sets, float* out) {
+  contractX<Channels>(axes[0], contractYZ<Channels>(axes[1], axes[2], sets), out);
 }
 
 void accumulate(const Hermite* axes, int channels, const float* const* sets, float* out) {
-  if (channels == 3)
-    separableSumRgb(axes[0], axes[1], axes[2], sets, out);
-  else if (channels == 1)
-    separableSum<1>(axes[0], axes[1], axes[2], 1, sets, out);
-  else
-    separableSum<0>(axes[0], axes[1], axes[2], channels, sets, out);
+  switch (channels) {
+    case 1:
+      return sumCorners<1>(axes, sets, out);
+    case 2:
+      return sumCorners<2>(axes, sets, out);
+    case 3:
+      return sumCorners<3>(axes, sets, out);
+    default:
+      return sumCorners<4>(axes, sets, out);
+  }
 }
 
 // The three axes' Hermite functions at a cube location, exact or from the weight table.
@@ -252,9 +252,10 @@ __attribute__((always_inline)) inline void evaluateOneRegion(const GradientSolid
                                                              std::size_t count, const TricubicWeightTable* table,
                                                              float* out) {
   const std::size_t stride = std::size_t(solid.setSize());
-  const int channels = Channels ? Channels : solid.channels;
   std::int64_t cube = -1;
-  const float* sets[8];
+  float rowV = -1, rowW = -1;  // the y and z parameters the coefficients were contracted at
+  const float* sets[8] = {};
+  XCoefficients coefficients{};
   for (std::size_t n = 0; n < count; ++n) {
     const CubeLocation at = locate(solid, points[n]);
     const std::int64_t here = solid.controlIndex(at.cube[0], at.cube[1], at.cube[2]);
@@ -262,14 +263,16 @@ __attribute__((always_inline)) inline void evaluateOneRegion(const GradientSolid
       std::int64_t corners[8];
       cornerIndices(solid, at, corners);
       cornerSets(solid.positive, stride, corners, sets);
-      cube = here;
+      cube = here, rowV = -1;
     }
-    Hermite axes[3];
-    axisFunctions(at, table, axes);
-    if constexpr (Channels == 3)
-      separableSumRgb(axes[0], axes[1], axes[2], sets, out + n * 3);
-    else
-      separableSum<Channels>(axes[0], axes[1], axes[2], channels, sets, out + n * std::size_t(channels));
+    if (at.t[1] != rowV || at.t[2] != rowW) {
+      rowV = at.t[1], rowW = at.t[2];
+      const Hermite hv = table ? table->axisFunctions(rowV) : hermiteBasis(rowV);
+      const Hermite hw = table ? table->axisFunctions(rowW) : hermiteBasis(rowW);
+      coefficients = contractYZ<Channels>(hv, hw, sets);
+    }
+    contractX<Channels>(table ? table->axisFunctions(at.t[0]) : hermiteBasis(at.t[0]), coefficients,
+                        out + n * Channels);
   }
 }
 
@@ -286,9 +289,16 @@ TEXSYNTH_AVX2_CLONE void evaluateRgb(const GradientSolid& solid, const Vec3f* po
   evaluateOneRegion<3>(solid, points, count, table, out);
 }
 
-TEXSYNTH_AVX2_CLONE void evaluateAnyChannels(const GradientSolid& solid, const Vec3f* points, std::size_t count,
-                                             const TricubicWeightTable* table, float* out) {
-  evaluateOneRegion<0>(solid, points, count, table, out);
+TEXSYNTH_AVX2_CLONE void evaluateOtherChannels(const GradientSolid& solid, const Vec3f* points, std::size_t count,
+                                               const TricubicWeightTable* table, float* out) {
+  switch (solid.channels) {
+    case 1:
+      return evaluateOneRegion<1>(solid, points, count, table, out);
+    case 2:
+      return evaluateOneRegion<2>(solid, points, count, table, out);
+    default:
+      return evaluateOneRegion<4>(solid, points, count, table, out);
+  }
 }
 
 }  // namespace
@@ -303,7 +313,7 @@ void evaluateGradientSolid(const GradientSolid& solid, std::span<const Vec3f> po
   } else if (solid.channels == 3) {
     evaluateRgb(solid, points.data(), points.size(), options.table, out);
   } else {
-    evaluateAnyChannels(solid, points.data(), points.size(), options.table, out);
+    evaluateOtherChannels(solid, points.data(), points.size(), options.table, out);
   }
 }
 

@@ -22,15 +22,6 @@ TricubicWeightTable::TricubicWeightTable(int samplesPerSide) : samples_(samplesP
         tricubicWeights(i * step, j * step, k * step, const_cast<float*>(entry(i, j, k)));
 }
 
-std::array<float, 4> TricubicWeightTable::axisFunctions(float t) const {
-  const float s = std::clamp(t, 0.0f, 1.0f) * float(samples_ - 1);
-  const int i = std::min(int(s), samples_ - 2);
-  const float f = s - float(i);
-  std::array<float, 4> h;
-  for (int k = 0; k < 4; ++k) h[k] = (1 - f) * axes_[std::size_t(i) * 4 + k] + f * axes_[std::size_t(i + 1) * 4 + k];
-  return h;
-}
-
 void TricubicWeightTable::weights(float u, float v, float w, float* out) const {
   // Every entry is a product of one Hermite function per axis, so trilinear interpolation of the
   // entries equals the product of linear interpolations of the axes' sampled functions: the same

@@ -10,6 +10,7 @@
 // Order of the 32 weights: corner p = x + 2y + 4z (x, y, z in {0,1}), then slot s = 0 value,
 // 1 d/du, 2 d/dv, 3 d/dw: weight index 4p + s. Gradients are per cube edge (u runs 0..1 across
 // one cube), not per voxel.
+#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -62,7 +63,13 @@ class TricubicWeightTable {
   // Weights at (u,v,w) in [0,1]^3, trilinear between the 8 nearest entries.
   void weights(float u, float v, float w, float* out) const;
   // The table's factor along one axis at t: the 4 Hermite functions interpolated linearly.
-  std::array<float, 4> axisFunctions(float t) const;
+  std::array<float, 4> axisFunctions(float t) const {
+    const float s = std::clamp(t, 0.0f, 1.0f) * float(samples_ - 1);
+    const int i = std::min(int(s), samples_ - 2);
+    const float f = s - float(i);
+    const float *a = &axes_[std::size_t(i) * 4], *b = a + 4;
+    return {a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1]), a[2] + f * (b[2] - a[2]), a[3] + f * (b[3] - a[3])};
+  }
   // The same by fetching the 8 entries (the GPU's way; slower on a CPU).
   void weightsFromEntries(float u, float v, float w, float* out) const;
 
