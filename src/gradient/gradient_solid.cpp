@@ -178,102 +178,103 @@ float evaluateGradientDistance(const GradientSolid& solid, const Vec3f& point) {
   return d;
 }
 
-void evaluateGradientSolid(const GradientSolid& solid, const Vec3f& point, const GradientEvaluateOptions& options,
-                           float* out) {
-  const int channels = solid.channels;
-  const std::size_t setSize = std::size_t(solid.setSize());
-  auto positiveSet = [&](std::int64_t control) { return &solid.positive[std::size_t(control) * setSize]; };
-  auto negativeSet = [&](std::int64_t control) {
-    const std::int32_t index = solid.negativeIndex[std::size_t(control)];
-    return index < 0 ? positiveSet(control) : &solid.negative[std::size_t(index) * setSize];
-  };
-  const bool regions = options.regions && solid.hasRegions();
-
-  if (!options.exact) {
-    const bool negativeSide = regions && evaluateGradientDistance(solid, point) < 0.0f;
-    if (negativeSide)
-      firstOrder(solid, point, channels, negativeSet, out);
-    else
-      firstOrder(solid, point, channels, positiveSet, out);
-  } else {
-    const CubeLocation at = locate(solid, point);
-    std::int64_t corners[8];
-    cornerIndices(solid, at, corners);
-    Hermite weights[3];
-    axisFunctions(at, options.table, weights);
-    float distance = 1.0f;
-    const float* sets[8];
-    if (regions) {
-      cornerSets(solid.distance, 4, corners, sets);
-      accumulate(weights, 1, sets, &distance);
-    }
-    const float half = 0.5f * options.antialiasVoxels;
-    auto side = [&](bool positive, float* values) {
-      for (int p = 0; p < 8; ++p) sets[p] = positive ? positiveSet(corners[p]) : negativeSet(corners[p]);
-      accumulate(weights, channels, sets, values);
-    };
-    if (!regions || distance >= half) {
-      side(true, out);
-    } else if (distance <= -half) {
-      side(false, out);
-    } else {  // near the boundary: blend both sides linearly across antialiasVoxels (§5.3)
-      float negative[4];
-      side(true, out);
-      side(false, negative);
-      const float t = 0.5f + distance / options.antialiasVoxels;
-      for (int c = 0; c < channels; ++c) out[c] = t * out[c] + (1 - t) * negative[c];
-    }
-  }
-
-  if (options.detail && solid.hasDetail()) {  // §5.4: Gaussian grain of the fitted sigma, fixed per voxel
-    const CubeLocation at = locate(solid, point);
-    std::int64_t corners[8];
-    cornerIndices(solid, at, corners);
-    Hermite weights[3];
-    axisFunctions(at, nullptr, weights);
-    float sigma[4];
-    const float* sets[8];
-    cornerSets(solid.detail, setSize, corners, sets);
-    accumulate(weights, channels, sets, sigma);
-    const std::uint64_t cell = latticeId(std::lround(point.x()), std::lround(point.y()), std::lround(point.z()));
-    // One draw for all channels: texture grain is mostly light and dark, and independent draws per
-    // channel would show as coloured speckle.
-    const float grain = gaussianFromKey(hashKey(options.detailSeed, cell));
-    for (int c = 0; c < channels; ++c) out[c] += std::max(sigma[c], 0.0f) * grain;
-  }
-}
-
 namespace {
 
-// Batches of points in one region: consecutive points in the same cube (slices, volumes, render spans)
-// reuse its corners.
+// Batches of points: consecutive points in one cube share its corners' sets, and points of a row (the
+// same y and z inside the cube, as slices and volumes give them) share the y-z contraction of every
+// array they need (colours of either side, distance, detail), computed on first use. Single points go
+// through here too, so every path gives the same bits.
 template <int Channels>
-__attribute__((always_inline)) inline void evaluateOneRegion(const GradientSolid& solid, const Vec3f* points,
-                                                             std::size_t count, const TricubicWeightTable* table,
-                                                             float* out) {
-  const std::size_t stride = std::size_t(solid.setSize());
-  std::int64_t cube = -1;
-  float rowV = -1, rowW = -1;  // the y and z parameters the coefficients were contracted at
-  const float* sets[8] = {};
-  XCoefficients coefficients{};
-  for (std::size_t n = 0; n < count; ++n) {
-    const CubeLocation at = locate(solid, points[n]);
-    const std::int64_t here = solid.controlIndex(at.cube[0], at.cube[1], at.cube[2]);
-    if (here != cube) {
-      std::int64_t corners[8];
-      cornerIndices(solid, at, corners);
-      cornerSets(solid.positive, stride, corners, sets);
-      cube = here, rowV = -1;
+class BatchEvaluator {
+ public:
+  BatchEvaluator(const GradientSolid& solid, const GradientEvaluateOptions& options)
+      : solid_(solid),
+        options_(options),
+        regions_(options.regions && solid.hasRegions()),
+        detail_(options.detail && solid.hasDetail()) {}
+
+  __attribute__((always_inline)) inline void operator()(const Vec3f& point, float* out) {
+    const CubeLocation at = locate(solid_, point);
+    const std::int64_t cube = solid_.controlIndex(at.cube[0], at.cube[1], at.cube[2]);
+    if (cube != cube_) enterCube(at, cube);
+    if (at.t[1] != rowV_ || at.t[2] != rowW_) {
+      rowV_ = at.t[1], rowW_ = at.t[2];
+      hv_ = axis(rowV_), hw_ = axis(rowW_);
+      ready_ = 0;
     }
-    if (at.t[1] != rowV || at.t[2] != rowW) {
-      rowV = at.t[1], rowW = at.t[2];
-      const Hermite hv = table ? table->axisFunctions(rowV) : hermiteBasis(rowV);
-      const Hermite hw = table ? table->axisFunctions(rowW) : hermiteBasis(rowW);
-      coefficients = contractYZ<Channels>(hv, hw, sets);
+    const Hermite hu = axis(at.t[0]);
+    float distance = 1.0f;
+    if (regions_) contractX<1>(hu, coefficients(kDistance), &distance);
+    const float half = 0.5f * options_.antialiasVoxels;
+    if (!regions_ || distance >= half) {
+      contractX<Channels>(hu, coefficients(kPositive), out);
+    } else if (distance <= -half) {
+      contractX<Channels>(hu, coefficients(kNegative), out);
+    } else {  // near the boundary: blend both sides linearly across antialiasVoxels (§5.3)
+      float negative[4];
+      contractX<Channels>(hu, coefficients(kPositive), out);
+      contractX<Channels>(hu, coefficients(kNegative), negative);
+      const float t = 0.5f + distance / options_.antialiasVoxels;
+      for (int c = 0; c < Channels; ++c) out[c] = t * out[c] + (1 - t) * negative[c];
     }
-    contractX<Channels>(table ? table->axisFunctions(at.t[0]) : hermiteBasis(at.t[0]), coefficients,
-                        out + n * Channels);
+    if (detail_) {  // §5.4: Gaussian grain of the fitted sigma, fixed per voxel
+      float sigma[4];
+      contractX<Channels>(hu, coefficients(kDetail), sigma);
+      const std::uint64_t cell = latticeId(std::lround(point.x()), std::lround(point.y()), std::lround(point.z()));
+      // One draw for all channels: texture grain is mostly light and dark, and independent draws per
+      // channel would show as coloured speckle.
+      const float grain = gaussianFromKey(hashKey(options_.detailSeed, cell));
+      for (int c = 0; c < Channels; ++c) out[c] += std::max(sigma[c], 0.0f) * grain;
+    }
   }
+
+ private:
+  enum Array { kPositive, kNegative, kDistance, kDetail };
+
+  Hermite axis(float t) const { return options_.table ? options_.table->axisFunctions(t) : hermiteBasis(t); }
+
+  void enterCube(const CubeLocation& at, std::int64_t cube) {
+    cube_ = cube, rowV_ = -1, ready_ = 0;
+    std::int64_t corners[8];
+    cornerIndices(solid_, at, corners);
+    const std::size_t stride = std::size_t(solid_.setSize());
+    cornerSets(solid_.positive, stride, corners, sets_[kPositive]);
+    if (regions_) {
+      cornerSets(solid_.distance, 4, corners, sets_[kDistance]);
+      for (int p = 0; p < 8; ++p) {
+        const std::int32_t index = solid_.negativeIndex[std::size_t(corners[p])];
+        sets_[kNegative][p] = index < 0 ? sets_[kPositive][p] : &solid_.negative[std::size_t(index) * stride];
+      }
+    }
+    if (detail_) cornerSets(solid_.detail, stride, corners, sets_[kDetail]);
+  }
+
+  const XCoefficients& coefficients(Array array) {
+    if (!(ready_ & (1u << array))) {
+      contracted_[array] =
+          array == kDistance ? contractYZ<1>(hv_, hw_, sets_[array]) : contractYZ<Channels>(hv_, hw_, sets_[array]);
+      ready_ |= 1u << array;
+    }
+    return contracted_[array];
+  }
+
+  const GradientSolid& solid_;
+  const GradientEvaluateOptions& options_;
+  const bool regions_, detail_;
+  std::int64_t cube_ = -1;
+  float rowV_ = -1, rowW_ = -1;
+  Hermite hv_{}, hw_{};
+  const float* sets_[4][8] = {};
+  XCoefficients contracted_[4] = {};
+  unsigned ready_ = 0;  // bit per Array: contracted_ holds it for this row
+};
+
+template <int Channels>
+__attribute__((always_inline)) inline void evaluateBatch(const GradientSolid& solid, const Vec3f* points,
+                                                         std::size_t count, const GradientEvaluateOptions& options,
+                                                         float* out) {
+  BatchEvaluator<Channels> evaluate(solid, options);
+  for (std::size_t n = 0; n < count; ++n) evaluate(points[n], out + n * Channels);
 }
 
 // GCC also builds these for AVX2 and picks at load time where the CPU has it; the module is compiled
@@ -285,19 +286,19 @@ __attribute__((always_inline)) inline void evaluateOneRegion(const GradientSolid
 #endif
 
 TEXSYNTH_AVX2_CLONE void evaluateRgb(const GradientSolid& solid, const Vec3f* points, std::size_t count,
-                                     const TricubicWeightTable* table, float* out) {
-  evaluateOneRegion<3>(solid, points, count, table, out);
+                                     const GradientEvaluateOptions& options, float* out) {
+  evaluateBatch<3>(solid, points, count, options, out);
 }
 
 TEXSYNTH_AVX2_CLONE void evaluateOtherChannels(const GradientSolid& solid, const Vec3f* points, std::size_t count,
-                                               const TricubicWeightTable* table, float* out) {
+                                               const GradientEvaluateOptions& options, float* out) {
   switch (solid.channels) {
     case 1:
-      return evaluateOneRegion<1>(solid, points, count, table, out);
+      return evaluateBatch<1>(solid, points, count, options, out);
     case 2:
-      return evaluateOneRegion<2>(solid, points, count, table, out);
+      return evaluateBatch<2>(solid, points, count, options, out);
     default:
-      return evaluateOneRegion<4>(solid, points, count, table, out);
+      return evaluateBatch<4>(solid, points, count, options, out);
   }
 }
 
@@ -305,16 +306,30 @@ TEXSYNTH_AVX2_CLONE void evaluateOtherChannels(const GradientSolid& solid, const
 
 void evaluateGradientSolid(const GradientSolid& solid, std::span<const Vec3f> points,
                            const GradientEvaluateOptions& options, float* out) {
-  const bool plain =
-      options.exact && !(options.regions && solid.hasRegions()) && !(options.detail && solid.hasDetail());
-  if (!plain) {
+  if (!options.exact) {
     for (std::size_t n = 0; n < points.size(); ++n)
       evaluateGradientSolid(solid, points[n], options, out + n * std::size_t(solid.channels));
   } else if (solid.channels == 3) {
-    evaluateRgb(solid, points.data(), points.size(), options.table, out);
+    evaluateRgb(solid, points.data(), points.size(), options, out);
   } else {
-    evaluateOtherChannels(solid, points.data(), points.size(), options.table, out);
+    evaluateOtherChannels(solid, points.data(), points.size(), options, out);
   }
+}
+
+void evaluateGradientSolid(const GradientSolid& solid, const Vec3f& point, const GradientEvaluateOptions& options,
+                           float* out) {
+  if (options.exact) return evaluateGradientSolid(solid, std::span<const Vec3f>(&point, 1), options, out);
+  // First-order approximation (§4.2.4), on the side the distance gives.
+  const std::size_t setSize = std::size_t(solid.setSize());
+  auto positiveSet = [&](std::int64_t control) { return &solid.positive[std::size_t(control) * setSize]; };
+  auto negativeSet = [&](std::int64_t control) {
+    const std::int32_t index = solid.negativeIndex[std::size_t(control)];
+    return index < 0 ? positiveSet(control) : &solid.negative[std::size_t(index) * setSize];
+  };
+  if (options.regions && solid.hasRegions() && evaluateGradientDistance(solid, point) < 0.0f)
+    firstOrder(solid, point, solid.channels, negativeSet, out);
+  else
+    firstOrder(solid, point, solid.channels, positiveSet, out);
 }
 
 Volume rasterizeGradientSolid(const GradientSolid& solid, const GradientEvaluateOptions& options) {
