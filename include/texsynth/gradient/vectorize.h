@@ -6,8 +6,9 @@
 // the control points are then refined against the exact tricubic evaluation of every sample (eq. 3):
 // a sparse least-squares problem solved by conjugate gradients warm-started from the first-order fit.
 // With a mask, the two regions are separated (§4.3): the signed distance to the mask's boundary is
-// fitted as well, control points next to the boundary get a positive and a negative set, each fitted
-// from its side's samples propagated a few voxels across the boundary (dilation).
+// fitted first (always refined), control points of cubes its sign changes in get a positive and a
+// negative set, each fitted from the voxels the stored distance puts on its side (as evaluation will)
+// plus its side's values carried a few voxels across the boundary (dilation, weighing 0.1).
 // With `detail`, the residuals' per-channel sigma is fitted too (§5.4).
 #include <cstdint>
 
