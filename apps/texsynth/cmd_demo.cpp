@@ -18,6 +18,7 @@
 #include "texsynth/core/data_paths.h"
 #include "texsynth/core/memory_budget.h"
 #include "texsynth/core/output_batch.h"
+#include "texsynth/core/timing.h"
 #include "texsynth/eval/metrics.h"
 #include "texsynth/exemplar/analysis.h"
 #include "texsynth/exemplar/analysis_cache.h"
@@ -44,10 +45,6 @@ struct DemoArgs {
 
 const char* kDefaultPattern = "Stone/pink_marble.pat";
 const char* kDefaultMesh = "bunny00.off";
-
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 // The centre `size` x `size` crop (or the whole image if smaller), as RGB.
 Image centerCrop(const Image& image, int size) {

@@ -8,6 +8,8 @@
 #include <memory>
 #include <sstream>
 
+#include "texsynth/core/color.h"
+#include "texsynth/core/timing.h"
 #include "texsynth/gradient/gradient_edit.h"
 #include "texsynth/gradient/gradient_solid_file.h"
 #include "texsynth/gradient/gradient_solid_texture.h"
@@ -31,19 +33,11 @@ const Vec3f kEditColor(0.12f, 0.42f, 0.62f);  // a blue far from any marble, so 
 // More local than the paper's 1e-4: the marble's colours are all close, and 1e-4 turns it all blue.
 constexpr float kEditAlpha = 1e-3f;
 
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 Box3f unitBox() {
   Box3f box;
   box.extend(Vec3f::Zero());
   box.extend(Vec3f::Ones());
   return box;
-}
-
-float luminance(const float* v, int channels) {
-  return channels >= 3 ? 0.2126f * v[0] + 0.7152f * v[1] + 0.0722f * v[2] : v[0];
 }
 
 // Plane z of the raster, as RGB, each voxel a factor x factor block: what the voxels really hold.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "texsynth/core/color.h"
 #include "texsynth/core/wrap.h"
 
 namespace texsynth {
@@ -50,7 +51,7 @@ Image Image::withChannels(int count) const {
   for (std::size_t p = 0; p < pixelCount(); ++p) {
     const float* src = &pixels[p * channels];
     float* dst = &out.pixels[p * count];
-    float gray = channels >= 3 ? 0.2126f * src[0] + 0.7152f * src[1] + 0.0722f * src[2] : src[0];
+    float gray = luminance(src, channels);
     bool srcAlpha = channels == 2 || channels == 4;
     float alpha = srcAlpha ? src[channels - 1] : 1.0f;
     int colorIn = srcAlpha ? channels - 1 : channels;

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <unordered_map>
 
+#include "texsynth/core/color.h"
 #include "texsynth/core/error.h"
 #include "texsynth/gradient/edit_influence.h"
 
@@ -80,8 +81,8 @@ int editColorChannels(int channels) {
 
 std::array<float, 3> editReference(const Vec3f& color, int colorChannels) {
   if (colorChannels == 3) return {color.x(), color.y(), color.z()};
-  const float luminance = 0.2126f * color.x() + 0.7152f * color.y() + 0.0722f * color.z();
-  return {luminance, luminance, luminance};
+  const float gray = luminance(color.data(), 3);
+  return {gray, gray, gray};
 }
 
 }  // namespace texsynth

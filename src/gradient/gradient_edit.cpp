@@ -9,16 +9,13 @@
 #include "edit_tables.h"
 #include "texsynth/core/error.h"
 #include "texsynth/core/parallel.h"
+#include "texsynth/core/timing.h"
 #include "texsynth/gradient/edit_influence.h"
 
 namespace texsynth {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 void checkColor(const Vec3f& color) {
   for (int a = 0; a < 3; ++a)

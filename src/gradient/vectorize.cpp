@@ -5,6 +5,7 @@
 
 #include "texsynth/core/error.h"
 #include "texsynth/core/parallel.h"
+#include "texsynth/core/timing.h"
 #include "texsynth/gradient/gradient_solid_file.h"
 #include "vectorize_layout.h"
 #include "vectorize_regions.h"
@@ -13,10 +14,6 @@ namespace texsynth {
 namespace {
 
 using namespace vectorize_detail;
-
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 // The colour channels vectorized: gray or RGB (alpha is dropped).
 Volume colorChannels(const Volume& volume) {

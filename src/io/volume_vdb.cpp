@@ -12,6 +12,7 @@
 #include <sstream>
 #include <vector>
 
+#include "texsynth/core/color.h"
 #include "texsynth/core/error.h"
 #include "volume_codecs.h"
 
@@ -59,8 +60,7 @@ std::string encodeVdb(const std::string& path, const Volume& volume) {
     {
       std::vector<float> density(count);
       for (std::size_t i = 0; i < count; ++i) {
-        const float* v = &volume.voxels[i * channels];
-        density[i] = channels >= 3 ? 0.2126f * v[0] + 0.7152f * v[1] + 0.0722f * v[2] : v[0];
+        density[i] = luminance(&volume.voxels[i * channels], channels);
       }
       auto grid = gridFromDense<openvdb::FloatGrid>(volume, density, "density");
       grid->setGridClass(openvdb::GRID_FOG_VOLUME);
