@@ -83,29 +83,6 @@ __attribute__((always_inline)) inline void contractX(const Hermite& hu, const XC
   for (int c = 0; c < Channels; ++c) out[c] = sum[c];
 }
 
-template <int Channels>
-void sumCorners(const Hermite* axes, const float* const* sets, float* out) {
-  contractX<Channels>(axes[0], contractYZ<Channels>(axes[1], axes[2], sets), out);
-}
-
-void accumulate(const Hermite* axes, int channels, const float* const* sets, float* out) {
-  switch (channels) {
-    case 1:
-      return sumCorners<1>(axes, sets, out);
-    case 2:
-      return sumCorners<2>(axes, sets, out);
-    case 3:
-      return sumCorners<3>(axes, sets, out);
-    default:
-      return sumCorners<4>(axes, sets, out);
-  }
-}
-
-// The three axes' Hermite functions at a cube location, exact or from the weight table.
-void axisFunctions(const CubeLocation& at, const TricubicWeightTable* table, Hermite* axes) {
-  for (int a = 0; a < 3; ++a) axes[a] = table ? table->axisFunctions(at.t[a]) : hermiteBasis(at.t[a]);
-}
-
 // The 8 corners' sets in `array` (stride floats per control point).
 void cornerSets(const std::vector<float>& array, std::size_t stride, const std::int64_t* corners, const float** sets) {
   for (int p = 0; p < 8; ++p) sets[p] = &array[std::size_t(corners[p]) * stride];
@@ -169,12 +146,10 @@ float evaluateGradientDistance(const GradientSolid& solid, const Vec3f& point) {
   const CubeLocation at = locate(solid, point);
   std::int64_t corners[8];
   cornerIndices(solid, at, corners);
-  Hermite axes[3];
-  axisFunctions(at, nullptr, axes);
   const float* sets[8];
   cornerSets(solid.distance, 4, corners, sets);
   float d;
-  accumulate(axes, 1, sets, &d);
+  contractX<1>(hermiteBasis(at.t[0]), contractYZ<1>(hermiteBasis(at.t[1]), hermiteBasis(at.t[2]), sets), &d);
   return d;
 }
 
@@ -332,14 +307,30 @@ void evaluateGradientSolid(const GradientSolid& solid, const Vec3f& point, const
     firstOrder(solid, point, solid.channels, positiveSet, out);
 }
 
+namespace {
+
+// Calls row(y, z, values) for every row of the solid's raster, the rows of one z in one task, with the
+// row's nx * channels values.
+template <typename Row>
+void forEachRasterRow(const GradientSolid& solid, const GradientEvaluateOptions& options, Row row) {
+  const int nx = solid.voxels.x();
+  parallelFor(0, solid.voxels.z(), [&](std::int64_t z) {
+    std::vector<Vec3f> points(static_cast<std::size_t>(nx));
+    std::vector<float> values(points.size() * std::size_t(solid.channels));
+    for (int y = 0; y < solid.voxels.y(); ++y) {
+      for (int x = 0; x < nx; ++x) points[std::size_t(x)] = Vec3f(float(x), float(y), float(z));
+      evaluateGradientSolid(solid, points, options, values.data());
+      row(y, int(z), values.data());
+    }
+  });
+}
+
+}  // namespace
+
 Volume rasterizeGradientSolid(const GradientSolid& solid, const GradientEvaluateOptions& options) {
   Volume volume(solid.voxels.x(), solid.voxels.y(), solid.voxels.z(), solid.channels);
-  parallelFor(0, volume.nz, [&](std::int64_t z) {
-    std::vector<Vec3f> row(std::size_t(volume.nx));
-    for (int y = 0; y < volume.ny; ++y) {
-      for (int x = 0; x < volume.nx; ++x) row[std::size_t(x)] = Vec3f(float(x), float(y), float(z));
-      evaluateGradientSolid(solid, row, options, volume.voxel(0, y, int(z)));
-    }
+  forEachRasterRow(solid, options, [&](int y, int z, const float* values) {
+    std::copy_n(values, std::size_t(volume.nx) * std::size_t(volume.channels), volume.voxel(0, y, z));
   });
   return volume;
 }
@@ -348,23 +339,16 @@ double gradientSolidRms(const GradientSolid& solid, const Volume& volume, const 
   if (volume.nx != solid.voxels.x() || volume.ny != solid.voxels.y() || volume.nz != solid.voxels.z())
     throw ParameterError("volume", "is not the size of the solid's raster");
   if (volume.channels < solid.channels) throw ParameterError("volume", "has fewer channels than the solid");
-  std::vector<double> sums(std::size_t(volume.nz), 0.0);
-  parallelFor(0, volume.nz, [&](std::int64_t z) {
-    std::vector<Vec3f> row(std::size_t(volume.nx));
-    std::vector<float> values(row.size() * std::size_t(solid.channels));
-    double sum = 0;
-    for (int y = 0; y < volume.ny; ++y) {
-      for (int x = 0; x < volume.nx; ++x) row[std::size_t(x)] = Vec3f(float(x), float(y), float(z));
-      evaluateGradientSolid(solid, row, options, values.data());
-      for (int x = 0; x < volume.nx; ++x) {
-        const float* original = volume.voxel(x, y, int(z));
-        for (int c = 0; c < solid.channels; ++c) {
-          const double d = values[std::size_t(x) * solid.channels + std::size_t(c)] - original[c];
-          sum += d * d;
-        }
+  std::vector<double> sums(std::size_t(volume.nz), 0.0);  // per z: each written by its own task
+  forEachRasterRow(solid, options, [&](int y, int z, const float* values) {
+    double& sum = sums[std::size_t(z)];
+    for (int x = 0; x < volume.nx; ++x) {
+      const float* original = volume.voxel(x, y, z);
+      for (int c = 0; c < solid.channels; ++c) {
+        const double d = values[std::size_t(x) * solid.channels + std::size_t(c)] - original[c];
+        sum += d * d;
       }
     }
-    sums[std::size_t(z)] = sum;
   });
   double total = 0;
   for (double s : sums) total += s;
