@@ -86,13 +86,18 @@ void checkOutputs(const SolidArgs& args) {
     std::string ext = fileExtension(out);
     bool meshOut = ext == "ply" || ext == "obj" || ext == "glb" || ext == "gltf";
     bool volumeOut = ext == "nrrd" || ext == "vdb";
+    if (ext == kGradientSolidExtension) {
+      if (args.method != "gradient" || fileExtension(args.exemplars.front()) == kGradientSolidExtension)
+        throw ParameterError("--output", "'" + out + "': a gradient solid (.tsgs) is written by --method gradient");
+      continue;
+    }
     if (meshOut && args.mesh.empty()) throw ParameterError("--output", "'" + out + "' is a mesh: give --mesh");
     if (fileKind(out) == FileKind::Image)
       ++imageOutputs;
     else if (!meshOut && !volumeOut)
       throw ParameterError("--output", "'" + out +
                                            "': unknown output type (.ply .obj .glb .gltf mesh, .png .jpg .exr "
-                                           "slice, .nrrd .vdb volume)");
+                                           "slice, .nrrd .vdb volume, .tsgs gradient solid)");
   }
   if (imageOutputs != args.slices.size())
     throw ParameterError("--slice", std::to_string(args.slices.size()) + " slice(s) but " +
@@ -134,17 +139,21 @@ void requireSolidMemory(const SolidArgs& args, const Box3f& box) {
 }
 
 std::unique_ptr<SolidTexture> makeSolid(const SolidArgs& args, const Mesh& mesh, const Box3f& box, std::uint64_t seed,
-                                        json& report, LazyBuild& lazy) {
+                                        const GlobalOptions& globals, json& report, LazyBuild& lazy,
+                                        std::shared_ptr<const GradientSolid>& gradient) {
   const std::string& exemplar = args.exemplars.front();
-  if (args.method == "gradient") {  // a finished gradient solid, spanning the box
-    auto solid = std::make_shared<const GradientSolid>(readGradientSolid(exemplar));
+  if (args.method == "gradient") {  // a finished gradient solid or one synthesized now, spanning the box
+    const bool file = fileExtension(exemplar) == kGradientSolidExtension;
+    auto solid = file ? std::make_shared<const GradientSolid>(readGradientSolid(exemplar))
+                      : synthesizeGradient(args, mesh, box, seed, globals, report);
+    gradient = solid;
     GradientSolidTextureOptions options;
     options.placement = gradientSolidPlacement(*solid, box);
     options.detail = args.detail == "on";
     options.seed = seed;
     // Blend across a region boundary over one output sample, so edges are smooth but never soft.
     options.antialiasVoxels = std::min(1.0f, float(solid->voxels.maxCoeff()) / float(args.resolution));
-    report["variant"] = "gradient solid";
+    if (file) report["variant"] = "gradient solid";
     report["gradient_solid"] = {{"voxels", {solid->voxels.x(), solid->voxels.y(), solid->voxels.z()}},
                                 {"spacing", solid->spacing},
                                 {"regions", solid->hasRegions()},
@@ -206,18 +215,25 @@ const std::vector<ModeFlag> kSolidModeFlags = {
     {"--sharpness", {"tile-deform", "tile-blend"}},
     {"--tile-size", {"tile-blend"}},
     {"--blend-exponent", {"tile-blend"}},
-    {"--field", {"lazy"}},
-    {"--sketch", {"lazy"}},
-    {"--mask", {"lazy"}},
-    {"--inner", {"lazy"}},
-    {"--shell", {"lazy"}},
+    {"--field", {"lazy", "gradient"}},
+    {"--sketch", {"lazy", "gradient"}},
+    {"--mask", {"lazy", "gradient"}},
+    {"--inner", {"lazy", "gradient"}},
+    {"--shell", {"lazy", "gradient"}},
+    {"--iterations", {"gradient"}},
+    {"--check-points", {"gradient"}},
+    {"--slices", {"gradient"}},
+    {"--crossbar", {"gradient"}},
+    {"--regions", {"gradient"}},
+    {"--optimize", {"gradient"}},
+    {"--clusters", {"gradient"}},
     {"--levels", {"lazy"}},
     {"--passes", {"lazy"}},
     {"--coarsest-passes", {"lazy"}},
     {"--dual-grid", {"lazy"}},
     {"--grid-cell", {"lazy"}},
     {"--tiles", {"tile-deform", "tile-blend", "lazy"}},
-    {"--detail", {"gradient"}},
+    {"--detail", {"gradient", "gradient-file"}},
 };
 
 // Where the library's parameters come from on `solid`'s command line.
@@ -259,8 +275,9 @@ void runSolid(const CLI::App& parser, SolidArgs& args, const GlobalOptions& glob
     if (args.exemplars.size() > 1) throw ParameterError("EXEMPLAR", "give one .tsgs gradient solid");
     args.method = "gradient";
   }
-  rejectFlagsOutsideMode(parser, kSolidModeFlags, args.method,
-                         args.method == "gradient" ? "with a gradient solid (.tsgs)" : "with --method " + args.method);
+  const bool gradientFile = fileExtension(args.exemplars.front()) == kGradientSolidExtension;
+  rejectFlagsOutsideMode(parser, kSolidModeFlags, gradientFile ? "gradient-file" : args.method,
+                         gradientFile ? "with a gradient solid (.tsgs)" : "with --method " + args.method);
   rejectFlagsOutsideMode(parser, {{"--render-size", {"--render"}}, {"--views", {"--render"}}},
                          args.render.empty() ? "" : "--render", "without --render");
   rejectFlagsOutsideMode(parser, {{"--shell", {"--inner"}}}, args.inner.empty() ? "" : "--inner", "without --inner");
@@ -298,7 +315,8 @@ void runSolid(const CLI::App& parser, SolidArgs& args, const GlobalOptions& glob
                   "the " + std::to_string(surfacePoints.size()) + " voxels of the surface");
   }
   LazyBuild lazy;
-  std::unique_ptr<SolidTexture> solid = makeSolid(args, mesh, box, globals.seed, report, lazy);
+  std::shared_ptr<const GradientSolid> gradient;
+  std::unique_ptr<SolidTexture> solid = makeSolid(args, mesh, box, globals.seed, globals, report, lazy, gradient);
   report["setup_seconds"] = lap();
   report["setup_peak_rss_mib"] = takePeakResidentMiB();
   if (!lazy.parts.empty())  // the work so far: the coarsest level over the box (separate from what follows)
@@ -322,7 +340,9 @@ void runSolid(const CLI::App& parser, SolidArgs& args, const GlobalOptions& glob
   std::size_t nextSlice = 0;
   for (const std::string& out : args.outputs) {
     std::string ext = fileExtension(out);
-    if (fileKind(out) == FileKind::Image) {
+    if (ext == kGradientSolidExtension) {
+      writeGradientSolid(out, *gradient);
+    } else if (fileKind(out) == FileKind::Image) {
       auto [axis, position] = slices[nextSlice++];
       writeImage(out, withPrepared(*solid, [&](const SolidTexture& s) {
                    return sampleSlice(s, box, axis, position, args.resolution);
@@ -392,9 +412,13 @@ Command registerSolidCommand(CLI::App& app, const GlobalOptions& globals) {
       "  tile-blend: triplanar histogram-preserving tiling and blending (Heitz & Neyret 2018) of a 2D exemplar.\n"
       "  lazy: deterministic on-demand synthesis of coordinate triples (sketch-guided solid texturing), optionally "
       "following a rotation --field; only the voxels the outputs need are synthesized.\n"
+      "  gradient: synthesize a whole gradient solid (a compact C1 tricubic solid, gradient-solid-textures §4) "
+      "over the box at --resolution by optimizing its control points, optionally following --field and keeping "
+      "--mask regions sharp; write it with -o SOLID.tsgs and view it with any other output. Experimental: the "
+      "optimization still washes the solid out (docs/gradient-solids.md).\n"
       "Outputs: -o FILE, as often as needed; the extension says what: .ply .obj .glb .gltf a colored copy of "
       "--mesh, .png .jpg .exr the next --slice, .nrrd .vdb the volume over the mesh's box (or the unit cube) at "
-      "--resolution.");
+      "--resolution, .tsgs the gradient solid of --method gradient.");
   auto args = std::make_shared<SolidArgs>();
   inputFiles(
       sub->add_option(
@@ -406,7 +430,7 @@ Command registerSolidCommand(CLI::App& app, const GlobalOptions& globals) {
       ->expected(1, 3);
   sub->add_option("--method", args->method, "Synthesis method")
       ->capture_default_str()
-      ->check(CLI::IsMember({"tile-deform", "tile-blend", "lazy"}));
+      ->check(CLI::IsMember({"tile-deform", "tile-blend", "lazy", "gradient"}));
   inputFiles(sub->add_option("--mesh", args->mesh, "Mesh to texture (.obj .ply .off .stl)"));
   outputFiles(sub->add_option("-o,--output", args->outputs, "Output file(s): colored mesh, slice image(s) or volume"));
   outputFiles(sub->add_option_function<std::string>(
@@ -455,13 +479,14 @@ Command registerSolidCommand(CLI::App& app, const GlobalOptions& globals) {
       ->check(finiteIn(0.001, 1000));
   addTileBlendOptions(*sub, args->tileSize, args->blendExponent);
   auto* field = inputFiles(sub->add_option(
-      "--field", args->field, "lazy: rotation field (.tsfield from `texsynth field`) the texture follows"));
+      "--field", args->field, "lazy, gradient: rotation field (.tsfield from `texsynth field`) the texture follows"));
   inputFiles(sub->add_option(
       "--inner", args->inner,
-      "lazy with --mesh: exemplar for everything deeper than --shell below the surface (the paper's tree: "
+      "lazy, gradient with --mesh: exemplar for everything deeper than --shell below the surface (the paper's tree: "
       "bark outside, wood inside)"));
-  sub->add_option("--shell", args->shell,
-                  "lazy with --inner: depth of the outer region, as a fraction of the mesh's bounding-box diagonal")
+  sub->add_option(
+         "--shell", args->shell,
+         "lazy, gradient with --inner: depth of the outer region, as a fraction of the mesh's bounding-box diagonal")
       ->capture_default_str()
       ->check(finiteIn(1e-4, 1, true));
   sub->add_option("--levels", args->levels, "lazy: pyramid levels L")->capture_default_str()->check(integerIn(1, 8));
@@ -480,18 +505,44 @@ Command registerSolidCommand(CLI::App& app, const GlobalOptions& globals) {
                   "lazy with --dual-grid: the cell side M in voxels, even (paper: 10-15)")
       ->capture_default_str()
       ->check(integerIn(4, 32));
-  inputFiles(sub->add_option(
-                 "--sketch", args->sketch,
-                 "lazy with --mesh: design the rotation field from these sketch curves first (as `texsynth field`, "
-                 "docs/sketch-format.md); instead of --field"))
+  inputFiles(
+      sub->add_option(
+          "--sketch", args->sketch,
+          "lazy, gradient with --mesh: design the rotation field from these sketch curves first (as `texsynth field`, "
+          "docs/sketch-format.md); instead of --field"))
       ->excludes(field);
-  inputFiles(sub->add_option(
-                 "--mask", args->masks,
-                 "lazy: feature mask image(s), bright on feature curves (e.g. brick joints): one for all planes or "
-                 "three (XY YZ ZX); matching adds the distance to the features as a channel"))
+  inputFiles(
+      sub->add_option(
+          "--mask", args->masks,
+          "lazy, gradient: feature mask image(s), bright on feature curves (e.g. brick joints): one for all planes or "
+          "three (XY YZ ZX); matching adds the distance to the features as a channel; gradient also keeps the two "
+          "sides apart with sharp boundaries (--no-regions: the mask only guides matching)"))
       ->expected(1, 3);
+  sub->add_option("--iterations", args->iterations, "gradient: optimization iterations per level (N_O)")
+      ->capture_default_str()
+      ->check(integerIn(1, 20));
+  sub->add_option("--check-points", args->checkPoints, "gradient: random check points per control cube (N_C)")
+      ->capture_default_str()
+      ->check(integerIn(1, 64));
+  sub->add_option("--slices", args->matchedSlices,
+                  "gradient: slices matched per check point: 3, or 2 (the x and y slices; for anisotropic exemplars)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({2, 3}));
+  sub->add_flag("--crossbar,!--no-crossbar", args->crossbar,
+                "gradient: crossbar matching (on by default): E_y among the 20 patches whose crossbar agrees best "
+                "with E_x, E_z among the 50 agreeing with both; --no-crossbar: independent searches");
+  sub->add_flag("--regions,!--no-regions", args->regions,
+                "gradient with --mask: separate the mask's two regions with sharp boundaries (on by default)");
+  sub->add_flag("--optimize", args->optimize,
+                "gradient: refine the control points against every synthesized voxel by the exact tricubic (eq. 3; "
+                "slower)");
+  sub->add_option("--clusters", args->clusters,
+                  "gradient: colour clusters N_T; a voxel averages only its two most frequent")
+      ->capture_default_str()
+      ->check(integerIn(2, 64));
   sub->add_option("--detail", args->detail,
-                  "A gradient solid (.tsgs) with stored residual detail: add its deterministic grain (on) or not (off)")
+                  "gradient: fit the residual detail and add its deterministic grain (on) or not (off); with a .tsgs "
+                  "input: add the grain it stores")
       ->capture_default_str()
       ->check(CLI::IsMember({"on", "off"}));
   sub->add_option("--cut", args->cut,

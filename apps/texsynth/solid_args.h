@@ -7,6 +7,7 @@
 
 #include "cli_common.h"
 #include "texsynth/core/mesh.h"
+#include "texsynth/gradient/gradient_solid.h"
 #include "texsynth/solid/lazy_solid.h"
 #include "texsynth/solid/solid_texture.h"
 
@@ -30,8 +31,10 @@ struct SolidArgs {
   int levels = 4, passes = 2, coarsestPasses = 3, gridCell = 12;
   bool dualGrid = true;
   float shell = 0.05f;
-  // gradient (a .tsgs input)
+  // gradient: synthesis from images, or a finished solid (.tsgs input)
   std::string detail = "on";
+  int iterations = 3, checkPoints = 3, matchedSlices = 3, clusters = 12;
+  bool crossbar = true, regions = true, optimize = false;
 };
 
 // --method lazy: one LazySolid on the exemplars (one for all planes, or XY YZ ZX), guided by
@@ -44,6 +47,13 @@ struct LazyBuild {
 };
 LazyBuild makeLazySolid(const SolidArgs& args, const Mesh& mesh, const Box3f& box, const SolidPlacement& placement,
                         std::uint64_t seed, nlohmann::json& report);
+
+// --method gradient with image exemplars: a gradient solid synthesized over `box` at --resolution (§4 of
+// gradient-solid-textures), following --field or the field of --sketch, with --inner's exemplar deeper than
+// --shell below the mesh's surface.
+std::shared_ptr<const GradientSolid> synthesizeGradient(const SolidArgs& args, const Mesh& mesh, const Box3f& box,
+                                                        std::uint64_t seed, const GlobalOptions& globals,
+                                                        nlohmann::json& report);
 
 // Per-level work of every lazy part, for --stats.
 nlohmann::json lazyStats(const LazyBuild& build);

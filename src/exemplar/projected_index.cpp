@@ -1,6 +1,7 @@
 // KD-tree over projected exemplar neighborhoods (see projected_index.h).
 #include "texsynth/exemplar/projected_index.h"
 
+#include <algorithm>
 #include <limits>
 #include <nanoflann.hpp>
 #include <numeric>
@@ -80,6 +81,16 @@ std::int32_t ProjectedNeighborhoodIndex::nearest(const float* query) const {
   NearestResult result;
   tree_->tree.findNeighbors(result, query, nanoflann::SearchParams(32, epsilon_));
   return tree_->pixels[result.index()];
+}
+
+void ProjectedNeighborhoodIndex::nearest(const float* query, int k, std::vector<std::int32_t>& out) const {
+  std::vector<std::uint32_t> indices(std::size_t(std::max(k, 1)));
+  std::vector<float> distances(indices.size());
+  nanoflann::KNNResultSet<float, std::uint32_t> result{indices.size()};
+  result.init(indices.data(), distances.data());
+  tree_->tree.findNeighbors(result, query, nanoflann::SearchParams(32, epsilon_));
+  out.clear();
+  for (std::size_t i = 0; i < result.size(); ++i) out.push_back(tree_->pixels[indices[i]]);
 }
 
 }  // namespace texsynth

@@ -1,15 +1,10 @@
 // Eq. 2: each control point's value and gradients from a first-order Taylor fit to its bucket of voxels.
-#include <Eigen/Dense>
-
+#include "first_order_fit.h"
 #include "texsynth/core/parallel.h"
 #include "vectorize_layout.h"
 
 namespace texsynth::vectorize_detail {
 namespace {
-
-// Gradients are damped a little so that a bucket one voxel thin (a control past the volume's end)
-// still gives a well-posed system; 1e-3 of the sample count changes nothing measurable elsewhere.
-constexpr double kGradientDamping = 1e-3;
 
 // `sides` and `sign`: with regions, voxels evaluation puts on the other side weigh kExtendedWeight.
 void fitSet(const ControlGrid& grid, int i, int j, int k, const Volume& samples, int channels, float* set,
@@ -17,26 +12,16 @@ void fitSet(const ControlGrid& grid, int i, int j, int k, const Volume& samples,
   const int index[3] = {i, j, k};
   int begin[3], end[3];
   for (int a = 0; a < 3; ++a) begin[a] = grid.ownedBegin(a, index[a]), end[a] = grid.ownedEnd(a, index[a]);
-  Eigen::Matrix4d normal = Eigen::Matrix4d::Zero();
-  Eigen::Matrix<double, 4, 4> rhs = Eigen::Matrix<double, 4, 4>::Zero();  // columns: channels
+  FirstOrderFit fit(channels);
   const double inverse = 1.0 / grid.spacing;
   for (int z = begin[2]; z < end[2]; ++z)
     for (int y = begin[1]; y < end[1]; ++y)
       for (int x = begin[0]; x < end[0]; ++x) {
-        const Eigen::Vector4d basis(1.0, (x - i * grid.spacing) * inverse, (y - j * grid.spacing) * inverse,
-                                    (z - k * grid.spacing) * inverse);
         const double weight = sides && (sides->at(x, y, z, 0) > 0.5f) != (sign > 0) ? double(kExtendedWeight) : 1.0;
-        normal.noalias() += weight * basis * basis.transpose();
-        const float* value = samples.voxel(x, y, z);
-        for (int c = 0; c < channels; ++c) rhs.col(c) += weight * basis * double(value[c]);
+        fit.add((x - i * grid.spacing) * inverse, (y - j * grid.spacing) * inverse, (z - k * grid.spacing) * inverse,
+                samples.voxel(x, y, z), weight);
       }
-  const double count = normal(0, 0);
-  for (int a = 1; a < 4; ++a) normal(a, a) += kGradientDamping * count;
-  const Eigen::LDLT<Eigen::Matrix4d> solver(normal);
-  for (int c = 0; c < channels; ++c) {
-    const Eigen::Vector4d solution = solver.solve(rhs.col(c));
-    for (int slot = 0; slot < 4; ++slot) set[slot * channels + c] = float(solution[slot]);
-  }
+  fit.solve(set);
 }
 
 }  // namespace

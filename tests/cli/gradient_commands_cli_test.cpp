@@ -258,3 +258,27 @@ TEST_F(GradientCommands, DetailAddsGrainOnlyWhenAsked) {
 }
 
 }  // namespace
+
+// --- solid --method gradient: synthesis from an image ---
+
+TEST_F(GradientCommands, SolidSynthesizesAGradientSolidFromAnImage) {
+  Image exemplar(48, 48, 3);
+  for (int y = 0; y < 48; ++y)
+    for (int x = 0; x < 48; ++x)
+      for (int c = 0; c < 3; ++c)
+        exemplar.at(x, y, c) = 0.5f + 0.3f * std::sin(0.4f * float(x + 2 * c) + 0.2f * float(y));
+  writeImage(file("e.png"), exemplar);
+  RunResult r = run("solid " + file("e.png") + " --method gradient --resolution 16 --iterations 1 -o " +
+                    file("s.tsgs") + " --slice z=0.5 -o " + file("s.png") + " --stats " + file("s.json"));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const GradientSolid solid = readGradientSolid(file("s.tsgs"));
+  EXPECT_EQ(solid.voxels, Vec3i(16, 16, 16));
+  EXPECT_EQ(readImage(file("s.png")).width, 16);
+  const auto stats = readJson(file("s.json"));
+  EXPECT_GT(stats["synthesis"]["check_points"].get<int>(), 0);
+  // The synthesized solid is an input like any other .tsgs.
+  ASSERT_EQ(run("solid " + file("s.tsgs") + " --resolution 8 --slice x=0.5 -o " + file("t.png")).exitCode, 0);
+  // Only --method gradient writes one.
+  test::expectOneLineError(run("solid " + file("e.png") + " --resolution 8 -o " + file("u.tsgs")), 2, "--output");
+  EXPECT_FALSE(std::filesystem::exists(file("u.tsgs")));
+}

@@ -272,7 +272,7 @@ std::string sweepCommand(const std::string& command, const HelpOption& option, c
   if (d.rfind("lazy", 0) == 0)  // one level without passes: accepted values finish in a second
     base += std::string(" --method lazy") + (flag == "--levels" ? "" : " --levels 1") +
             (flag == "--coarsest-passes" ? "" : " --coarsest-passes 0");
-  for (const char* method : {"tile-blend", "parallel", "optimize"})
+  for (const char* method : {"tile-blend", "parallel", "optimize", "gradient"})
     if (d.rfind(method, 0) == 0) base += std::string(" --method ") + method;
   return base + " " + flag + "=";
 }

@@ -23,6 +23,8 @@ class ProjectedNeighborhoodIndex {
 
   // The pixel whose vector is nearest to query[dimension] (ties: the lower index). Thread-safe.
   std::int32_t nearest(const float* query) const;
+  // The (at most) k nearest pixels, nearest first (approximate as the index's epsilon). Thread-safe.
+  void nearest(const float* query, int k, std::vector<std::int32_t>& out) const;
 
  private:
   struct Tree;
