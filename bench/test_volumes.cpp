@@ -5,6 +5,7 @@
 #include <cmath>
 #include <vector>
 
+#include "texsynth/core/color.h"
 #include "texsynth/core/gradient_noise.h"
 #include "texsynth/core/math.h"
 #include "texsynth/core/parallel.h"
@@ -108,17 +109,21 @@ Volume makeCausticsVolume(int side, std::uint64_t seed) {
   return volume;
 }
 
+std::vector<float> luminanceMask(const std::vector<float>& values, int channels, float quantile, bool above) {
+  const std::size_t count = values.size() / std::size_t(channels);
+  std::vector<float> luma(count);
+  for (std::size_t i = 0; i < count; ++i) luma[i] = luminance(&values[i * std::size_t(channels)], channels);
+  std::vector<float> sorted = luma;
+  auto at = sorted.begin() + std::ptrdiff_t(std::min(count - 1, std::size_t(quantile * float(count))));
+  std::nth_element(sorted.begin(), at, sorted.end());
+  std::vector<float> mask(count);
+  for (std::size_t i = 0; i < count; ++i) mask[i] = (above ? luma[i] > *at : luma[i] < *at) ? 1.0f : 0.0f;
+  return mask;
+}
+
 Volume medianLuminanceMask(const Volume& volume) {
-  std::vector<float> luminance(volume.voxelCount());
-  for (std::size_t i = 0; i < luminance.size(); ++i) {
-    const float* v = &volume.voxels[i * std::size_t(volume.channels)];
-    luminance[i] = volume.channels >= 3 ? 0.2126f * v[0] + 0.7152f * v[1] + 0.0722f * v[2] : v[0];
-  }
-  std::vector<float> sorted = luminance;
-  auto middle = sorted.begin() + std::ptrdiff_t(sorted.size() / 2);
-  std::nth_element(sorted.begin(), middle, sorted.end());
   Volume mask(volume.nx, volume.ny, volume.nz, 1);
-  for (std::size_t i = 0; i < luminance.size(); ++i) mask.voxels[i] = luminance[i] > *middle ? 1.0f : 0.0f;
+  mask.voxels = luminanceMask(volume.voxels, volume.channels, 0.5f, true);
   return mask;
 }
 

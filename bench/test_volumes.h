@@ -17,4 +17,8 @@ Volume makeCausticsVolume(int side, std::uint64_t seed);
 // 1 where the voxel's luminance is above the volume's median luminance, else 0.
 Volume medianLuminanceMask(const Volume& volume);
 
+// 1 where a pixel's (or voxel's) luminance lies above (or below) the given quantile of all of them, else 0:
+// `values` holds `channels` floats per element.
+std::vector<float> luminanceMask(const std::vector<float>& values, int channels, float quantile, bool above);
+
 }  // namespace texsynth::bench

@@ -39,6 +39,7 @@ done
 rm "$out/crop.png"
 # Gradient solids: vectorization with and without a mask, --optimize, an edit, residual detail.
 bash scripts/gallery-gradient.sh "$build" "$out"
+bash scripts/gallery-gradient-synthesis.sh "$build" "$out"
 # Lazy solid synthesis of the burlap weave on the bunny, identity field and sketched field, each
 # with the bunny cut open (about 3 and 17 minutes on 2 cores).
 lazy=(solid $p/Fabric/burlap.pat --method lazy --mesh $m/bunny00.off --tiles 2 --cut z=0.55 --render-size 500 --views 2 --quiet)

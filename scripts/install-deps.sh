@@ -13,6 +13,8 @@ PACKAGES=(
   libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev libglpk-dev libzfp-dev
   # real data: exemplars, meshes, malformed models; a peer synthesizer for comparisons
   gimp-data libcgal-demo assimp-testmodels gmic
+  # benchmarks: /usr/bin/time (bench/gradient_synthesis.sh)
+  time
 )
 PACKAGES+=("$@")
 

@@ -219,7 +219,7 @@ void runDemo(const DemoArgs& args, const GlobalOptions& globals) {
                                {"seconds", tiling.seconds}};
 
   progress->begin("gradient solids", 1);
-  report["gradient"] = demoGradientSolids(exemplar, globals.seed, out);
+  report["gradient"] = demoGradientSolids(exemplar, globals.seed, cacheDir, out);
   progress->advance(1);
   progress->end();
 
@@ -228,7 +228,7 @@ void runDemo(const DemoArgs& args, const GlobalOptions& globals) {
   if (globals.json) printJson(report);
   say(globals, "wrote " + out("report.md") +
                    " with exemplar.png, gaussian_stack.png, mesh.png, mesh_solid.png, gradient_magnified.png, "
-                   "gradient_edit.png and gradient_solid.tsgs");
+                   "gradient_edit.png, gradient_synthesized.png and gradient_solid.tsgs");
 }
 
 }  // namespace

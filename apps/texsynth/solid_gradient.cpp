@@ -38,7 +38,8 @@ double synthesisBytes(const Vec3i& voxels, bool rotated) {
 std::shared_ptr<const GradientSolid> synthesizeGradient(const SolidArgs& args, const Mesh& mesh, const Box3f& box,
                                                         std::uint64_t seed, const GlobalOptions& globals,
                                                         json& report) {
-  if (args.exemplars.size() == 2) throw ParameterError("EXEMPLAR", "give one exemplar for all three planes, or three: XY YZ ZX");
+  if (args.exemplars.size() == 2)
+    throw ParameterError("EXEMPLAR", "give one exemplar for all three planes, or three: XY YZ ZX");
   GradientSynthesisOptions options;
   for (int a = 0; a < 3; ++a)
     options.voxels[a] = std::max(2, int(std::ceil(double(args.resolution) * box.size()[a] / box.size().maxCoeff())));
@@ -78,10 +79,12 @@ std::shared_ptr<const GradientSolid> synthesizeGradient(const SolidArgs& args, c
   sets.push_back(std::make_unique<GradientExemplars>(readImages(args.exemplars), readImages(args.masks),
                                                      exemplarOptions, *progress));
   if (!args.inner.empty()) {
-    if (mesh.positions.empty()) throw ParameterError("--inner", "needs --mesh: the regions are depths below its surface");
+    if (mesh.positions.empty())
+      throw ParameterError("--inner", "needs --mesh: the regions are depths below its surface");
     if (!args.masks.empty())
-      throw ParameterError("--inner", "with --mask: the mask describes the outer exemplars only; give neither or "
-                                      "synthesize the regions separately");
+      throw ParameterError("--inner",
+                           "with --mask: the mask describes the outer exemplars only; give neither or "
+                           "synthesize the regions separately");
     sets.push_back(std::make_unique<GradientExemplars>(std::vector<Image>{readImage(args.inner)}, std::vector<Image>{},
                                                        exemplarOptions, *progress));
     const float depth = args.shell * mesh.bounds().size().norm();
@@ -93,8 +96,7 @@ std::shared_ptr<const GradientSolid> synthesizeGradient(const SolidArgs& args, c
   std::vector<const GradientExemplars*> pointers;
   for (const auto& set : sets) pointers.push_back(set.get());
   GradientSynthesisReport synthesis;
-  auto solid =
-      std::make_shared<const GradientSolid>(synthesizeGradientSolid(pointers, options, &synthesis, *progress));
+  auto solid = std::make_shared<const GradientSolid>(synthesizeGradientSolid(pointers, options, &synthesis, *progress));
   report["variant"] = field ? "gradient synthesis, guided by a field" : "gradient synthesis";
   report["synthesis"] = {{"voxels", {options.voxels.x(), options.voxels.y(), options.voxels.z()}},
                          {"controls", {solid->controls.x(), solid->controls.y(), solid->controls.z()}},

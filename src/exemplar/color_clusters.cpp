@@ -75,8 +75,7 @@ ColorClusters clusterColors(const Image& image, int count, const std::vector<std
   if (channels < 1 || channels > image.channels)
     throw ParameterError("channels", "must be in [1, " + std::to_string(image.channels) + "]");
   const std::size_t pixels = image.pixelCount();
-  if (!regions.empty() && regions.size() != pixels)
-    throw ParameterError("regions", "must hold one label per pixel");
+  if (!regions.empty() && regions.size() != pixels) throw ParameterError("regions", "must hold one label per pixel");
   // One cluster per region present, at the region's first pixel.
   Clustering k{&image, channels, {}, {}};
   for (std::uint8_t region : {std::uint8_t(0), std::uint8_t(1)})
@@ -109,7 +108,8 @@ ColorClusters clusterColors(const Image& image, int count, const std::vector<std
       region = 1;
     int worst = -1;
     for (int c = 0; c < k.clusters(); ++c)
-      if (k.regions[std::size_t(c)] == region && (worst < 0 || clusterError[std::size_t(c)] > clusterError[std::size_t(worst)]))
+      if (k.regions[std::size_t(c)] == region &&
+          (worst < 0 || clusterError[std::size_t(c)] > clusterError[std::size_t(worst)]))
         worst = c;
     const std::size_t p = farthestPixel[std::size_t(worst)];
     k.regions.push_back(std::uint8_t(region));

@@ -141,7 +141,6 @@ void gatherCrossbars(const Image& image, int x, int y, int spacing, int n, float
   }
 }
 
-
 float crossbarL1(const float* a, const float* b, int dimension) {
   float acc[8] = {};
   int i = 0;

@@ -53,11 +53,13 @@ GradientSolid initialize(const std::vector<const GradientExemplars::Impl*>& sets
   parallelFor(0, state.controls.z(), [&](std::int64_t k) {
     for (int j = 0; j < state.controls.y(); ++j)
       for (int i = 0; i < state.controls.x(); ++i) {
-        const Vec3f position = (float(o.spacing) * Vec3f(float(i), float(j), float(k)))
-                                   .cwiseMin((o.voxels - Vec3i::Ones()).cast<float>());
+        const Vec3f position =
+            (float(o.spacing) * Vec3f(float(i), float(j), float(k))).cwiseMin((o.voxels - Vec3i::Ones()).cast<float>());
         const int set = o.exemplarSetOf ? o.exemplarSetOf(position) : 0;
         TS_CHECK_MSG(set >= 0 && set < int(sets.size()), "exemplar set rule out of range");
-        const Image& image = sets[std::size_t(set)]->at(SlicePlane::Z, int(sets[std::size_t(set)]->options.levelSizes.size()) - 1).level->image;
+        const Image& image = sets[std::size_t(set)]
+                                 ->at(SlicePlane::Z, int(sets[std::size_t(set)]->options.levelSizes.size()) - 1)
+                                 .level->image;
         const std::uint64_t key = hashKey(o.seed, latticeId(i, j, k), 0xfeed);
         const std::uint32_t pixel = uniformBelow(key, std::uint32_t(image.pixelCount()));
         std::copy_n(&image.pixels[std::size_t(pixel) * features], features,
@@ -137,6 +139,8 @@ GradientSolid synthesizeGradientSolid(const std::vector<const GradientExemplars*
   local.synthesisSeconds = secondsSince(start) - local.initializeSeconds;
   const auto refineStart = std::chrono::steady_clock::now();
   GradientSolid solid = refiner ? refiner->finish() : colorsOnly(state, colors);
+  // The refinement fits the last buckets' averages: give its colours the exemplar's distribution too.
+  if (refiner) matchControlHistograms(solid, base.sets[0]->at(SlicePlane::Z, levels - 1).level->image);
   local.refineSeconds = secondsSince(refineStart);
   local.checkPointsMatched = stats.checkPoints;
   local.peakBucketBytes = stats.peakBucketBytes + (refiner ? refiner->peakBytes() : 0);

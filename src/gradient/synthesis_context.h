@@ -17,10 +17,10 @@ struct LevelContext {
   std::vector<int> clusterOffset;  // per set: its first cluster in the joint numbering
   int clusterCount = 0;            // over all sets
   const GradientSynthesisOptions* options = nullptr;
-  int level = 0;       // index into every set's levels
-  int spacing = 1;     // h: sample spacing, in voxels and exemplar pixels
-  int size = 9;        // N
-  int features = 3;    // channels of the feature vector
+  int level = 0;     // index into every set's levels
+  int spacing = 1;   // h: sample spacing, in voxels and exemplar pixels
+  int size = 9;      // N
+  int features = 3;  // channels of the feature vector
   int iteration = 0;
   bool quantized = false;  // two passes, averaging only each voxel's two dominant clusters
   bool rotated = false;    // a field turns the slices
@@ -33,8 +33,8 @@ struct LevelContext {
 // A check point and what it matched: per slice plane (X, Y, Z) the exemplar pixel at the patch centre,
 // -1 where the plane is not matched.
 struct CheckPoint {
-  Vec3f position = Vec3f::Zero();  // voxel units
-  Mat3f frame = Mat3f::Identity(); // columns: the local axes in the solid
+  Vec3f position = Vec3f::Zero();   // voxel units
+  Mat3f frame = Mat3f::Identity();  // columns: the local axes in the solid
   int set = 0;
   std::int32_t pixel[3] = {-1, -1, -1};
 };
@@ -67,9 +67,7 @@ struct BucketGrid {
     const int first = i * controlSpacing - controlSpacing / 2;  // voxel
     return std::min((first + spacing - 1) / spacing, buckets[axis]);
   }
-  int ownedEnd(int axis, int i) const {
-    return i == controls[axis] - 1 ? buckets[axis] : ownedBegin(axis, i + 1);
-  }
+  int ownedEnd(int axis, int i) const { return i == controls[axis] - 1 ? buckets[axis] : ownedBegin(axis, i + 1); }
 };
 
 }  // namespace texsynth::gradient_synthesis

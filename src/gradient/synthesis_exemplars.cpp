@@ -31,8 +31,7 @@ void checkOptions(const GradientExemplarOptions& options) {
   if (options.pcaDimensions < 1 || options.pcaDimensions > 64)
     throw ParameterError("pcaDimensions", "must be in [1, 64], got " + std::to_string(options.pcaDimensions));
   if (options.crossbarDimensions < 1 || options.crossbarDimensions > 32)
-    throw ParameterError("crossbarDimensions",
-                         "must be in [1, 32], got " + std::to_string(options.crossbarDimensions));
+    throw ParameterError("crossbarDimensions", "must be in [1, 32], got " + std::to_string(options.crossbarDimensions));
   if (options.clusters < 2 || options.clusters > 64)
     throw ParameterError("clusters", "must be in [2, 64], got " + std::to_string(options.clusters));
   if (!(options.featureWeight > 0.0f) || !std::isfinite(options.featureWeight))
@@ -84,7 +83,8 @@ GradientExemplars::GradientExemplars(const std::vector<Image>& planes, const std
     const int e = source[std::size_t(p)];
     const int m = masks.size() <= 1 ? 0 : e;
     for (int q = 0; q < p && !s.analyses[std::size_t(p)]; ++q)
-      if (source[std::size_t(q)] == e) s.analyses[std::size_t(p)] = s.analyses[std::size_t(q)], s.levels[std::size_t(p)] = s.levels[std::size_t(q)];
+      if (source[std::size_t(q)] == e)
+        s.analyses[std::size_t(p)] = s.analyses[std::size_t(q)], s.levels[std::size_t(p)] = s.levels[std::size_t(q)];
     if (s.analyses[std::size_t(p)]) continue;
     AnalysisOptions analysisOptions;
     analysisOptions.levelCount = levelCount;
@@ -109,9 +109,9 @@ GradientExemplars::GradientExemplars(const std::vector<Image>& planes, const std
       level.leading = std::make_shared<std::vector<float>>(level.level->image.pixelCount() * kept);
       for (std::size_t q = 0; q < level.level->image.pixelCount(); ++q)
         std::copy_n(level.level->projectedAt(std::int32_t(q)), kept, level.leading->data() + q * kept);
-      level.nearest = std::make_shared<ProjectedNeighborhoodIndex>(
-          PixelVectors{level.leading->data(), s.width, s.height, kept}, std::vector<std::int32_t>{},
-          Impl::kTreeEpsilon);
+      level.nearest =
+          std::make_shared<ProjectedNeighborhoodIndex>(PixelVectors{level.leading->data(), s.width, s.height, kept},
+                                                       std::vector<std::int32_t>{}, Impl::kTreeEpsilon);
       level.crossbars =
           std::make_shared<CrossbarIndex>(level.level->image, level.level->spacing, level.level->neighborhoodSize);
     }
@@ -140,15 +140,16 @@ GradientExemplars::GradientExemplars(const std::vector<Image>& planes, const std
   for (std::size_t i = 0; i < distinctSources.size(); ++i) {
     const int p = int(std::find(source.begin(), source.end(), distinctSources[i]) - source.begin());
     const Image& finest = s.analyses[std::size_t(p)]->levels.back().image;
-    std::copy(finest.pixels.begin(), finest.pixels.end(), stacked.pixels.begin() + std::ptrdiff_t(i * finest.pixels.size()));
+    std::copy(finest.pixels.begin(), finest.pixels.end(),
+              stacked.pixels.begin() + std::ptrdiff_t(i * finest.pixels.size()));
     if (s.hasMask)
       for (std::size_t q = 0; q < planePixels; ++q)
         regions.push_back(finest.pixels[q * s.features + s.colorChannels] < 0.0f ? 1 : 0);
   }
   s.clusters = clusterColors(stacked, options.clusters, regions, s.colorChannels);
   for (int p = 0; p < 3; ++p) {
-    const std::size_t i = std::size_t(std::find(distinctSources.begin(), distinctSources.end(), source[std::size_t(p)]) -
-                                      distinctSources.begin());
+    const std::size_t i = std::size_t(
+        std::find(distinctSources.begin(), distinctSources.end(), source[std::size_t(p)]) - distinctSources.begin());
     s.labels[std::size_t(p)].assign(s.clusters.labels.begin() + std::ptrdiff_t(i * planePixels),
                                     s.clusters.labels.begin() + std::ptrdiff_t((i + 1) * planePixels));
   }
@@ -157,9 +158,17 @@ GradientExemplars::GradientExemplars(const std::vector<Image>& planes, const std
 GradientExemplars::~GradientExemplars() = default;
 GradientExemplars::GradientExemplars(GradientExemplars&&) noexcept = default;
 GradientExemplars& GradientExemplars::operator=(GradientExemplars&&) noexcept = default;
-int GradientExemplars::colorChannels() const { return impl_->colorChannels; }
-bool GradientExemplars::hasMask() const { return impl_->hasMask; }
-int GradientExemplars::levels() const { return int(impl_->options.levelSizes.size()); }
-const GradientExemplarOptions& GradientExemplars::options() const { return impl_->options; }
+int GradientExemplars::colorChannels() const {
+  return impl_->colorChannels;
+}
+bool GradientExemplars::hasMask() const {
+  return impl_->hasMask;
+}
+int GradientExemplars::levels() const {
+  return int(impl_->options.levelSizes.size());
+}
+const GradientExemplarOptions& GradientExemplars::options() const {
+  return impl_->options;
+}
 
 }  // namespace texsynth

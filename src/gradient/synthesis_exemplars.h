@@ -21,7 +21,7 @@ struct GradientExemplars::Impl {
   int width = 0, height = 0;
   int colorChannels = 3;
   bool hasMask = false;
-  int features = 3;            // channels of every level image and of the synthesized feature vector
+  int features = 3;  // channels of every level image and of the synthesized feature vector
 
   // Nearest patches are shortlisted on the leading PCA dimensions (a fast low-dimensional KD search) and
   // re-ranked on all of them.
@@ -29,8 +29,8 @@ struct GradientExemplars::Impl {
   static constexpr float kTreeEpsilon = 1.0f;
 
   struct Level {
-    const ExemplarLevel* level = nullptr;  // of the plane's analysis
-    std::shared_ptr<std::vector<float>> leading;  // per pixel its first kTreeDimensions projected coordinates
+    const ExemplarLevel* level = nullptr;                 // of the plane's analysis
+    std::shared_ptr<std::vector<float>> leading;          // per pixel its first kTreeDimensions projected coordinates
     std::shared_ptr<ProjectedNeighborhoodIndex> nearest;  // over `leading`
     std::shared_ptr<CrossbarIndex> crossbars;
   };

@@ -22,10 +22,14 @@ float quantile(const std::vector<float>& sorted, double q) {
 }  // namespace
 
 void matchControlHistograms(GradientSolid& state, const Image& target) {
-  const std::size_t controls = std::size_t(state.controlCount()), setSize = std::size_t(state.setSize());
+  const std::size_t setSize = std::size_t(state.setSize());
+  // Every feature set: the positive ones and, with regions, the negative ones.
+  std::vector<float*> sets;
+  for (std::size_t k = 0; k < state.positive.size(); k += setSize) sets.push_back(&state.positive[k]);
+  for (std::size_t k = 0; k < state.negative.size(); k += setSize) sets.push_back(&state.negative[k]);
   for (int c = 0; c < std::min(state.channels, target.channels); ++c) {
-    std::vector<float> from(controls), to(target.pixelCount());
-    for (std::size_t k = 0; k < controls; ++k) from[k] = state.positive[k * setSize + std::size_t(c)];
+    std::vector<float> from(sets.size()), to(target.pixelCount());
+    for (std::size_t k = 0; k < sets.size(); ++k) from[k] = sets[k][c];
     for (std::size_t p = 0; p < to.size(); ++p) to[p] = target.pixels[p * target.channels + std::size_t(c)];
     std::sort(from.begin(), from.end());
     std::sort(to.begin(), to.end());
@@ -34,8 +38,7 @@ void matchControlHistograms(GradientSolid& state, const Image& target) {
       x[k] = quantile(from, double(k) / kQuantiles);
       y[k] = quantile(to, double(k) / kQuantiles);
     }
-    for (std::size_t k = 0; k < controls; ++k) {
-      float* set = &state.positive[k * setSize];
+    for (float* set : sets) {
       const float v = set[c];
       const int knot = int(std::upper_bound(x, x + kQuantiles + 1, v) - x) - 1;
       const int i = std::clamp(knot, 0, kQuantiles - 1);

@@ -57,7 +57,6 @@ std::int32_t bestCandidate(const ExemplarLevel& level, const std::vector<std::ui
 
 }  // namespace
 
-
 void matchCheckPoint(const LevelContext& ctx, const GradientSolid& state, CheckPoint& cp) {
   thread_local Scratch scratch;
   const GradientExemplars::Impl& set = *ctx.sets[std::size_t(cp.set)];

@@ -26,7 +26,8 @@ inline void sampleFirstOrder(const GradientSolid& state, const Vec3f& point, flo
   const int f = state.channels;
   const float* s = &state.positive[std::size_t(state.controlIndex(nearest[0], nearest[1], nearest[2])) *
                                    std::size_t(state.setSize())];
-  for (int c = 0; c < f; ++c) out[c] = s[c] + offset[0] * s[f + c] + offset[1] * s[2 * f + c] + offset[2] * s[3 * f + c];
+  for (int c = 0; c < f; ++c)
+    out[c] = s[c] + offset[0] * s[f + c] + offset[1] * s[2 * f + c] + offset[2] * s[3 * f + c];
 }
 
 }  // namespace texsynth::gradient_synthesis

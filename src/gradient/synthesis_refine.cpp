@@ -10,8 +10,8 @@
 namespace texsynth::gradient_synthesis {
 namespace {
 
-constexpr int kCoreControls = 16;  // control points per tile side (x, y) and per slab (z) kept
-constexpr int kMarginControls = 2; // fitted around each core and dropped: covers the dilation and eq. 3's reach
+constexpr int kCoreControls = 16;   // control points per tile side (x, y) and per slab (z) kept
+constexpr int kMarginControls = 2;  // fitted around each core and dropped: covers the dilation and eq. 3's reach
 
 }  // namespace
 
@@ -68,7 +68,8 @@ void SlabRefiner::refineSlab() {
   const std::size_t layerFloats =
       std::size_t(state_.voxels.x()) * state_.voxels.y() * std::size_t(colors_ + (regions_ ? 1 : 0));
   if (keepFrom > bufferBegin_) {
-    buffer_.erase(buffer_.begin(), buffer_.begin() + std::ptrdiff_t(std::size_t(keepFrom - bufferBegin_) * layerFloats));
+    buffer_.erase(buffer_.begin(),
+                  buffer_.begin() + std::ptrdiff_t(std::size_t(keepFrom - bufferBegin_) * layerFloats));
     bufferBegin_ = keepFrom;
   }
 }
@@ -89,10 +90,10 @@ void SlabRefiner::refineTile(const Vec3i& coreBegin, const Vec3i& coreEnd) {
   for (int z = 0; z < size.z(); ++z)
     for (int y = 0; y < size.y(); ++y)
       for (int x = 0; x < size.x(); ++x) {
-        const float* source = &buffer_[((std::size_t(first.z() + z - bufferBegin_) * height + std::size_t(first.y() + y)) *
-                                            width +
-                                        std::size_t(first.x() + x)) *
-                                       stride];
+        const float* source =
+            &buffer_[((std::size_t(first.z() + z - bufferBegin_) * height + std::size_t(first.y() + y)) * width +
+                      std::size_t(first.x() + x)) *
+                     stride];
         std::copy_n(source, colors_, colors.voxel(x, y, z));
         if (regions_) {
           mask.at(x, y, z, 0) = source[colors_];
@@ -106,10 +107,12 @@ void SlabRefiner::refineTile(const Vec3i& coreBegin, const Vec3i& coreEnd) {
   for (int k = coreBegin.z(); k < coreEnd.z(); ++k)
     for (int j = coreBegin.y(); j < coreEnd.y(); ++j)
       for (int i = coreBegin.x(); i < coreEnd.x(); ++i) {
-        const std::int64_t local = tile.controlIndex(i - controlOffset.x(), j - controlOffset.y(), k - controlOffset.z());
+        const std::int64_t local =
+            tile.controlIndex(i - controlOffset.x(), j - controlOffset.y(), k - controlOffset.z());
         const std::int64_t global = out_.controlIndex(i, j, k);
         const std::size_t setSize = std::size_t(out_.setSize());
-        std::copy_n(&tile.positive[std::size_t(local) * setSize], setSize, &out_.positive[std::size_t(global) * setSize]);
+        std::copy_n(&tile.positive[std::size_t(local) * setSize], setSize,
+                    &out_.positive[std::size_t(global) * setSize]);
         if (options_.detail)
           std::copy_n(&tile.detail[std::size_t(local) * setSize], setSize, &out_.detail[std::size_t(global) * setSize]);
         if (!regions_) continue;
@@ -122,7 +125,8 @@ void SlabRefiner::refineTile(const Vec3i& coreBegin, const Vec3i& coreEnd) {
         const std::int32_t negative = tile.negativeIndex[std::size_t(local)];
         if (negative < 0) continue;
         out_.negativeIndex[std::size_t(global)] = std::int32_t(out_.negative.size() / setSize);
-        out_.negative.insert(out_.negative.end(), tile.negative.begin() + std::ptrdiff_t(std::size_t(negative) * setSize),
+        out_.negative.insert(out_.negative.end(),
+                             tile.negative.begin() + std::ptrdiff_t(std::size_t(negative) * setSize),
                              tile.negative.begin() + std::ptrdiff_t(std::size_t(negative + 1) * setSize));
       }
 }

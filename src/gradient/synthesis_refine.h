@@ -28,8 +28,8 @@ class SlabRefiner {
   bool regions_;
   VectorizeOptions options_;
   GradientSolid out_;
-  int nextCore_ = 0;       // first control layer of the next slab's core
-  int bufferBegin_ = 0;    // voxel z of buffer_'s first layer
+  int nextCore_ = 0;           // first control layer of the next slab's core
+  int bufferBegin_ = 0;        // voxel z of buffer_'s first layer
   std::vector<float> buffer_;  // voxel layers [bufferBegin_, ...), colours (+ 1 mask) per voxel
   std::int64_t peakBytes_ = 0;
 };

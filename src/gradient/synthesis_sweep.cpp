@@ -345,9 +345,9 @@ class Sweep {
   BucketGrid grid_;
   Window window_;
   Vec3i cubes_;
-  int step_ = 1;             // cubes between check-point blocks along each axis
-  Vec3i active_;             // blocks along x and y
-  int stripRows_ = 1;        // block rows per deposit strip
+  int step_ = 1;       // cubes between check-point blocks along each axis
+  Vec3i active_;       // blocks along x and y
+  int stripRows_ = 1;  // block rows per deposit strip
   int next1_ = 0, next2_ = 0, nextFit_ = 0, countsDone_ = 0;
   std::deque<std::vector<CheckPoint>> matches_;  // cube layers next2_ .. next1_ - 1
   std::map<int, std::vector<float>> pending_;    // fitted control layers not yet written

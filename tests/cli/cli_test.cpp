@@ -122,8 +122,9 @@ TEST(Cli, DemoRunsOnDefaultsAndWritesReport) {
   test::TempDir dir;
   RunResult r = runTexsynth("demo -o " + dir.file("demo") + " --quiet", dir);
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  for (const char* name : {"report.md", "report.json", "exemplar.png", "gaussian_stack.png", "mesh.png",
-                           "mesh_solid.png", "gradient_magnified.png", "gradient_edit.png", "gradient_solid.tsgs"})
+  for (const char* name :
+       {"report.md", "report.json", "exemplar.png", "gaussian_stack.png", "mesh.png", "mesh_solid.png",
+        "gradient_magnified.png", "gradient_edit.png", "gradient_synthesized.png", "gradient_solid.tsgs"})
     EXPECT_TRUE(fs::exists(dir.file(std::string("demo/") + name))) << name;
   std::string report = readFileBytes(dir.file("demo/report.json"));
   EXPECT_NE(report.find("periodicity"), std::string::npos);
@@ -151,7 +152,7 @@ TEST(Cli, SameSeedSameBitsForAnyThreadCount) {
   ASSERT_EQ(one.exitCode, 0) << one.err;
   ASSERT_EQ(two.exitCode, 0) << two.err;
   for (const char* name : {"gaussian_stack.png", "mesh.png", "mesh_solid.png", "gradient_magnified.png",
-                           "gradient_edit.png", "gradient_solid.tsgs"})
+                           "gradient_edit.png", "gradient_synthesized.png", "gradient_solid.tsgs"})
     EXPECT_EQ(readFileBytes(dir.file(std::string("t1/") + name)), readFileBytes(dir.file(std::string("t2/") + name)))
         << name;
 }

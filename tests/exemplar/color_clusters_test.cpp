@@ -23,7 +23,8 @@ TEST(ColorClusters, FindsFlatColoursExactly) {
   EXPECT_EQ(clusters.count, 4);
   EXPECT_NEAR(clusters.meanSquaredError, 0.0, 1e-9);
   for (int y = 0; y < 32; ++y)
-    for (int x = 0; x < 32; ++x) EXPECT_EQ(clusters.labels[std::size_t(y * 32 + x)], clusters.labels[std::size_t(x / 8 * 8)]);
+    for (int x = 0; x < 32; ++x)
+      EXPECT_EQ(clusters.labels[std::size_t(y * 32 + x)], clusters.labels[std::size_t(x / 8 * 8)]);
 }
 
 TEST(ColorClusters, ClustersNeverSpanTwoRegions) {

@@ -12,8 +12,8 @@
 namespace texsynth {
 
 struct ColorClusters {
-  int count = 0;     // clusters
-  int channels = 0;  // of the clustered colours
+  int count = 0;                      // clusters
+  int channels = 0;                   // of the clustered colours
   std::vector<float> centers;         // count x channels
   std::vector<std::uint8_t> labels;   // per pixel, its cluster
   std::vector<std::uint8_t> regions;  // per cluster, the region it serves (0 without regions)

@@ -77,8 +77,8 @@ struct GradientSynthesisOptions {
   bool regions = true;                  // with a mask: separate the regions sharply (§4.3)
   bool optimize = false;                // eq. 3 control-point optimization in the refinement
   int optimizeIterations = 6;
-  bool detail = false;                  // residual detail (§5.4)
-  bool bucketReuse = true;              // false: buckets for the whole solid (same result, n^3 memory)
+  bool detail = false;      // residual detail (§5.4)
+  bool bucketReuse = true;  // false: buckets for the whole solid (same result, n^3 memory)
   std::uint64_t seed = 1;
   // The local frame at a point (voxel units; global -> local, as rotation fields store it). Empty: axes.
   std::function<Quatf(const Vec3f&)> orientation;
