@@ -30,22 +30,22 @@ exemplar "$patterns/Animal/leopard.pat" 128 "$tmp/a0.png"
 join "$tmp/a_all.png" "$tmp/a0.png" "$tmp/a.png"
 gmic -v - "$tmp/a_all.png" -o "$out/gradient_synthesis_leopard_bunny_cut.jpg,85"
 
-# (b) Fig. 7: wood grain without and with the field of the bunny's example sketch (two slices matched: the
-# grain runs along the field's x axis, across the y slices).
+# (b) Fig. 7: bark's furrows without and with the field of the bunny's example sketch (two slices matched, as
+# for anisotropic exemplars).
 for field in none sketch; do
   flags=()
   [ "$field" = sketch ] && flags=(--sketch examples/sketches/bunny.json)
-  "$t" solid "$patterns/Wood/wood1.pat" --method gradient --slices 2 --mesh "$bunny" --resolution 128 \
+  "$t" solid "$patterns/Wood/bark.pat" --method gradient --slices 2 --mesh "$bunny" --resolution 128 \
     "${flags[@]}" --render "$tmp/b_$field.png" --views 1 --render-size 384 --quiet
 done
 join "$tmp/b.png" "$tmp/b_none.png" "$tmp/b_sketch.png"
-gmic -v - "$tmp/b.png" -o "$out/gradient_synthesis_wood_field_off_on.jpg,85"
+gmic -v - "$tmp/b.png" -o "$out/gradient_synthesis_bark_field_off_on.jpg,85"
 
 # (c) Fig. 6: brick without a mask and with its joints (the darkest 15%) as one: region separation keeps the
-# joints' edges sharp. Central z slices of 128³ solids, sampled at 256.
+# joints' edges sharp. Central z slices of 128³ solids, sampled at 256, without residual grain so the edges show.
 "$build/bench/make_test_volumes" --dark-mask-from "$patterns/Stone/brick.pat" "$tmp/joints.png" 0.15 >/dev/null
-"$t" solid "$patterns/Stone/brick.pat" --method gradient --resolution 128 -o "$tmp/brick.tsgs" --quiet
-"$t" solid "$patterns/Stone/brick.pat" --method gradient --mask "$tmp/joints.png" --resolution 128 \
+"$t" solid "$patterns/Stone/brick.pat" --method gradient --resolution 128 --detail off -o "$tmp/brick.tsgs" --quiet
+"$t" solid "$patterns/Stone/brick.pat" --method gradient --mask "$tmp/joints.png" --resolution 128 --detail off \
   -o "$tmp/brick_mask.tsgs" --quiet
 exemplar "$patterns/Stone/brick.pat" 256 "$tmp/c0.png"
 "$t" solid "$tmp/brick.tsgs" --slice z=0.5 --resolution 256 -o "$tmp/c1.png" --quiet

@@ -24,13 +24,13 @@ std::vector<Image> readImages(const std::vector<std::string>& paths) {
   return images;
 }
 
-// Peak bytes of a synthesis: the control points (feature vectors of up to 4 channels, as floats, with the
-// work copies of a layer) and the bucket window (about 2 (2 sqrt2 N + d) layers of the finest level), rounded up
-// from /usr/bin/time measurements (bench/gradient_synthesis.sh).
+// Peak bytes of a synthesis: the control points (feature vectors of up to 4 channels as floats, with a layer's
+// work copies) and the bucket window, about 2.3 KB per voxel column at the finest level (588 MiB for 512² columns,
+// bench/gradient_synthesis.sh; a field widens the window by sqrt 2).
 double synthesisBytes(const Vec3i& voxels, bool rotated) {
   const double controls = double(voxels.x() / 4 + 2) * double(voxels.y() / 4 + 2) * double(voxels.z() / 4 + 2);
-  const double layers = rotated ? 80.0 : 60.0;
-  return controls * 96.0 + double(voxels.x()) * voxels.y() * layers * 40.0 + 64e6;
+  const double column = rotated ? 3300.0 : 2400.0;
+  return controls * 96.0 + double(voxels.x()) * voxels.y() * column + 100e6;
 }
 
 }  // namespace

@@ -109,7 +109,8 @@ GradientSolid synthesizeGradientSolid(const std::vector<const GradientExemplars*
   std::optional<SlabRefiner> refiner;
   std::function<void(const ClosedLayer&)> closed;
   SweepStats stats;
-  progress.begin("gradient synthesis", std::int64_t(levels) * options.iterations);
+  // One step per cube layer of every iteration of every level.
+  progress.begin("gradient synthesis", std::int64_t(levels) * options.iterations * (state.controls.z() - 1));
   for (int level = 0; level < levels; ++level) {
     const auto levelStart = std::chrono::steady_clock::now();
     LevelContext ctx = base;
@@ -129,9 +130,8 @@ GradientSolid synthesizeGradientSolid(const std::vector<const GradientExemplars*
         refiner.emplace(state, colors, regions, vectorize);
         closed = [&refiner](const ClosedLayer& layer) { refiner->take(layer); };
       }
-      sweepIteration(ctx, state, stats, closed);
+      sweepIteration(ctx, state, stats, closed, progress);
       matchControlHistograms(state, base.sets[0]->at(SlicePlane::Z, level).level->image);
-      progress.advance(1);
     }
     local.levelSeconds.push_back(secondsSince(levelStart));
   }

@@ -8,7 +8,7 @@ namespace texsynth::gradient_synthesis {
 namespace {
 
 // Candidate searches are re-ranked by the slice distance, so they may be approximate.
-constexpr float kCandidateEpsilon = 2.0f;
+constexpr float kCandidateEpsilon = 6.0f;
 // Patches shortlisted on the leading PCA dimensions before the full distance decides.
 constexpr int kShortlist = 8;
 
@@ -28,6 +28,31 @@ void sampleSlice(const LevelContext& ctx, const GradientSolid& state, const Chec
   const Vec3f du = cp.frame.col(u) * h, dv = cp.frame.col(v) * h;
   const int r = ctx.radius(), n = ctx.size, f = state.channels;
   out.resize(std::size_t(n) * n * f);
+  if (cp.frame.isIdentity()) {  // axis-aligned: each axis's nearest controls and offsets once per slice
+    int nearest[3][kMaxNeighborhoodSize];
+    float offset[3][kMaxNeighborhoodSize];
+    const float inverse = 1.0f / float(state.spacing);
+    for (int a = 0; a < 3; ++a)
+      for (int k = -r; k <= r; ++k) {
+        const float step = a == u || a == v ? float(k) * h : 0.0f;
+        const float p = std::clamp(cp.position[a] + step, 0.0f, float(state.voxels[a] - 1)) * inverse;
+        nearest[a][k + r] = std::min(int(p + 0.5f), state.controls[a] - 1);
+        offset[a][k + r] = p - float(nearest[a][k + r]);
+      }
+    const std::size_t setSize = std::size_t(state.setSize());
+    int at[3];
+    for (int j = -r; j <= r; ++j)
+      for (int i = -r; i <= r; ++i) {
+        for (int a = 0; a < 3; ++a) at[a] = a == u ? i + r : a == v ? j + r : r;
+        const float* set =
+            &state.positive[std::size_t(state.controlIndex(nearest[0][at[0]], nearest[1][at[1]], nearest[2][at[2]])) *
+                            setSize];
+        const float ox = offset[0][at[0]], oy = offset[1][at[1]], oz = offset[2][at[2]];
+        float* o = &out[(std::size_t(j + r) * n + std::size_t(i + r)) * f];
+        for (int c = 0; c < f; ++c) o[c] = set[c] + ox * set[f + c] + oy * set[2 * f + c] + oz * set[3 * f + c];
+      }
+    return;
+  }
   for (int j = -r; j <= r; ++j) {
     const Vec3f row = cp.position + float(j) * dv;
     for (int i = -r; i <= r; ++i)

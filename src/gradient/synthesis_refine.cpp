@@ -10,7 +10,8 @@
 namespace texsynth::gradient_synthesis {
 namespace {
 
-constexpr int kCoreControls = 16;   // control points per tile side (x, y) and per slab (z) kept
+constexpr int kCoreControls = 16;   // control points per tile side (x, y) kept
+constexpr int kSlabControls = 4;    // control layers per slab (z) kept: the slab buffer is what grows with n^2
 constexpr int kMarginControls = 2;  // fitted around each core and dropped: covers the dilation and eq. 3's reach
 
 }  // namespace
@@ -50,14 +51,14 @@ void SlabRefiner::take(const ClosedLayer& layer) {
   // Every slab whose voxels are all here (the last layer completes every remaining one).
   const int d = state_.spacing;
   while (nextCore_ < state_.controls.z()) {
-    const int coreEnd = std::min(state_.controls.z(), nextCore_ + kCoreControls);
+    const int coreEnd = std::min(state_.controls.z(), nextCore_ + kSlabControls);
     if (layer.z < std::min(state_.voxels.z() - 1, d * (coreEnd - 1 + kMarginControls))) break;
     refineSlab();
   }
 }
 
 void SlabRefiner::refineSlab() {
-  const int coreEnd = std::min(state_.controls.z(), nextCore_ + kCoreControls);
+  const int coreEnd = std::min(state_.controls.z(), nextCore_ + kSlabControls);
   for (int ty = 0; ty < state_.controls.y(); ty += kCoreControls)
     for (int tx = 0; tx < state_.controls.x(); tx += kCoreControls)
       refineTile({tx, ty, nextCore_}, {std::min(state_.controls.x(), tx + kCoreControls),

@@ -96,9 +96,10 @@ class Sweep {
     stripRows_ = int(std::ceil(stripVoxels / float(state.spacing * step_))) + 1;
   }
 
-  void run(SweepStats& stats) {
+  void run(SweepStats& stats, Progress& progress) {
     for (next1_ = 0; next1_ < cubes_.z();) {
       matchLayer(next1_);
+      progress.advance(1);
       deposit(next1_, ctx_.quantized ? Pass::Count : Pass::Plain);
       if (!ctx_.quantized) matches_.pop_front(), ++next2_;
       ++next1_;
@@ -203,40 +204,51 @@ class Sweep {
     const Vec3f du = cp.frame.col(u) * float(h), dv = cp.frame.col(v) * float(h);
     Vec3i centre = Vec3i::Zero();
     for (int a = 0; a < 3; ++a) centre[a] = int(std::floor(cp.position[a] * inverse + 0.5f));
-    for (int j = -r; j <= r; ++j) {
-      const Vec3f row = cp.position + float(j) * dv;
-      const int py = wrapIndex(std::int64_t(ey) + std::int64_t(j) * h, image.height);
-      int px = wrapIndex(std::int64_t(ex) - std::int64_t(r) * h, image.width);
-      for (int i = -r; i <= r; ++i, px = px + h >= image.width ? px + h - image.width : px + h) {
-        Vec3i b;
-        if constexpr (kAligned) {
-          b = centre;
-          b[u] += i, b[v] += j;
-        } else {
-          const Vec3f q = (row + float(i) * du) * inverse;
-          for (int a = 0; a < 3; ++a) b[a] = int(std::floor(q[a] + 0.5f));
-        }
-        if (b.x() < 0 || b.y() < 0 || b.z() < 0 || b.x() >= grid_.buckets.x() || b.y() >= grid_.buckets.y() ||
-            b.z() >= grid_.buckets.z())
-          continue;
-        TS_CHECK_MSG(b.z() >= zLo && b.z() <= zHi, "a synthesis sample fell outside its bucket window");
-        const std::size_t pixel = std::size_t(py) * image.width + std::size_t(px);
-        const std::size_t bucket = std::size_t(b.y()) * grid_.buckets.x() + std::size_t(b.x());
-        Layer& layer = window_.at(b.z());
-        if (pass == Pass::Count) {
-          std::uint8_t& count = layer.counts[bucket * std::size_t(ctx_.clusterCount) + clusterOffset + labels[pixel]];
-          if (count < 255) ++count;
-          continue;
-        }
-        if (pass == Pass::Dominant) {
-          const std::uint8_t cluster = std::uint8_t(clusterOffset + labels[pixel]);
-          if (cluster != layer.dominant[2 * bucket] && cluster != layer.dominant[2 * bucket + 1]) continue;
-        }
-        float* sum = &layer.sums[bucket * std::size_t(f + 1)];
-        const float* value = image.pixel(px, py);
-        for (int c = 0; c < f; ++c) sum[c] += value[c];
-        sum[f] += 1.0f;
+    int columns[kMaxNeighborhoodSize], rows[kMaxNeighborhoodSize];  // the patch's exemplar pixels, wrapped
+    for (int k = -r; k <= r; ++k) {
+      columns[k + r] = wrapIndex(std::int64_t(ex) + std::int64_t(k) * h, image.width);
+      rows[k + r] = wrapIndex(std::int64_t(ey) + std::int64_t(k) * h, image.height);
+    }
+    const auto sample = [&](int i, int j) {
+      Vec3i b;
+      if constexpr (kAligned) {
+        b = centre;
+        b[u] += i, b[v] += j;
+      } else {
+        const Vec3f q = (cp.position + float(i) * du + float(j) * dv) * inverse;
+        for (int a = 0; a < 3; ++a) b[a] = int(std::floor(q[a] + 0.5f));
       }
+      if (b.x() < 0 || b.y() < 0 || b.z() < 0 || b.x() >= grid_.buckets.x() || b.y() >= grid_.buckets.y() ||
+          b.z() >= grid_.buckets.z())
+        return;
+      TS_CHECK_MSG(b.z() >= zLo && b.z() <= zHi, "a synthesis sample fell outside its bucket window");
+      const int px = columns[i + r], py = rows[j + r];
+      const std::size_t pixel = std::size_t(py) * image.width + std::size_t(px);
+      const std::size_t bucket = std::size_t(b.y()) * grid_.buckets.x() + std::size_t(b.x());
+      Layer& layer = window_.at(b.z());
+      if (pass == Pass::Count) {
+        std::uint8_t& count = layer.counts[bucket * std::size_t(ctx_.clusterCount) + clusterOffset + labels[pixel]];
+        if (count < 255) ++count;
+        return;
+      }
+      if (pass == Pass::Dominant) {
+        const std::uint8_t cluster = std::uint8_t(clusterOffset + labels[pixel]);
+        if (cluster != layer.dominant[2 * bucket] && cluster != layer.dominant[2 * bucket + 1]) return;
+      }
+      float* sum = &layer.sums[bucket * std::size_t(f + 1)];
+      const float* value = image.pixel(px, py);
+      for (int c = 0; c < f; ++c) sum[c] += value[c];
+      sum[f] += 1.0f;
+    };
+    // The inner loop runs along the slice axis with the closest buckets in memory: x for the y slice (v = x),
+    // u otherwise (x for z slices, y for x slices). Aligned patches put one sample per bucket, so the order
+    // never changes a sum.
+    if (kAligned && plane == int(SlicePlane::Y)) {
+      for (int i = -r; i <= r; ++i)
+        for (int j = -r; j <= r; ++j) sample(i, j);
+    } else {
+      for (int j = -r; j <= r; ++j)
+        for (int i = -r; i <= r; ++i) sample(i, j);
     }
   }
 
@@ -357,8 +369,8 @@ class Sweep {
 }  // namespace
 
 void sweepIteration(const LevelContext& ctx, GradientSolid& state, SweepStats& stats,
-                    const std::function<void(const ClosedLayer&)>& closed) {
-  Sweep(ctx, state, closed).run(stats);
+                    const std::function<void(const ClosedLayer&)>& closed, Progress& progress) {
+  Sweep(ctx, state, closed).run(stats, progress);
 }
 
 }  // namespace texsynth::gradient_synthesis

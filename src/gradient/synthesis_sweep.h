@@ -6,6 +6,7 @@
 #include <functional>
 
 #include "synthesis_context.h"
+#include "texsynth/core/progress.h"
 
 namespace texsynth::gradient_synthesis {
 
@@ -25,7 +26,8 @@ struct SweepStats {
 // Runs the iteration on `state` (feature-vector solid, one region). `closed`, if given, sees every bucket
 // layer in z order when it closes, before its control layer is refitted. Same bits for any thread count,
 // with or without bucket reuse.
+// `progress` advances by one per cube layer matched.
 void sweepIteration(const LevelContext& ctx, GradientSolid& state, SweepStats& stats,
-                    const std::function<void(const ClosedLayer&)>& closed = {});
+                    const std::function<void(const ClosedLayer&)>& closed = {}, Progress& progress = noProgress());
 
 }  // namespace texsynth::gradient_synthesis

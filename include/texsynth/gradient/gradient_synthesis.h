@@ -13,6 +13,9 @@
 //   reuse    cube layers are processed in z order and buckets live only while a check point can still
 //            reach them, so memory grows as n^2 N, not n^3 (bucket reuse)
 //   levels   the control grid is fixed; coarser levels double the sample spacing, N = 9, 11, 21 (§4.2.3)
+//   contrast after each iteration the control points take the exemplar's colour distribution (histogram
+//            matching, as Kopf et al. 2007 do for solid optimization): averaging many patches otherwise
+//            washes the solid out
 //   refine   region separation with dilation, optional eq. 3 optimization and residual detail (§4.3,
 //            §5.4), slab by slab through vectorization
 //
