@@ -414,8 +414,8 @@ Command registerSolidCommand(CLI::App& app, const GlobalOptions& globals) {
       "following a rotation --field; only the voxels the outputs need are synthesized.\n"
       "  gradient: synthesize a whole gradient solid (a compact C1 tricubic solid, gradient-solid-textures §4) "
       "over the box at --resolution by optimizing its control points, optionally following --field and keeping "
-      "--mask regions sharp; write it with -o SOLID.tsgs and view it with any other output. Experimental: the "
-      "optimization still washes the solid out (docs/gradient-solids.md).\n"
+      "--mask regions sharp; write it with -o SOLID.tsgs and view it with any other output. Structures a few "
+      "voxels across come out well, thinner ones soft (docs/gradient-solids.md).\n"
       "Outputs: -o FILE, as often as needed; the extension says what: .ply .obj .glb .gltf a colored copy of "
       "--mesh, .png .jpg .exr the next --slice, .nrrd .vdb the volume over the mesh's box (or the unit cube) at "
       "--resolution, .tsgs the gradient solid of --method gradient.");
@@ -423,8 +423,8 @@ Command registerSolidCommand(CLI::App& app, const GlobalOptions& globals) {
   inputFiles(
       sub->add_option(
           "EXEMPLAR", args->exemplars,
-          "2D exemplar image, or a 3D exemplar volume (.nrrd .vdb); lazy also takes three: XY YZ ZX (the planes' "
-          "exemplars). A gradient solid (.tsgs, from `texsynth vectorize`) is shown as it is, spanning the "
+          "2D exemplar image, or a 3D exemplar volume (.nrrd .vdb); lazy and gradient also take three: XY YZ ZX (the "
+          "planes' exemplars). A gradient solid (.tsgs, from `texsynth vectorize`) is shown as it is, spanning the "
           "mesh's box (or the unit cube)"))
       ->required()
       ->expected(1, 3);
@@ -432,7 +432,8 @@ Command registerSolidCommand(CLI::App& app, const GlobalOptions& globals) {
       ->capture_default_str()
       ->check(CLI::IsMember({"tile-deform", "tile-blend", "lazy", "gradient"}));
   inputFiles(sub->add_option("--mesh", args->mesh, "Mesh to texture (.obj .ply .off .stl)"));
-  outputFiles(sub->add_option("-o,--output", args->outputs, "Output file(s): colored mesh, slice image(s) or volume"));
+  outputFiles(sub->add_option("-o,--output", args->outputs,
+                              "Output file(s): colored mesh, slice image(s), volume or gradient solid (.tsgs)"));
   outputFiles(sub->add_option_function<std::string>(
       "--volume", [args](const std::string& file) { args->outputs.push_back(file); },
       "Write the volume (.nrrd or .vdb) at --resolution; the same as -o FILE"));
