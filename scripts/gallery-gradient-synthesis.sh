@@ -14,13 +14,7 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 patterns=/usr/share/gimp/2.0/patterns
 bunny=.data/meshes/bunny00.off
-# Images left to right, 8 white pixels apart (as scripts/gallery-gradient.sh).
-join() {
-  local target=$1 args=()
-  shift
-  for image in "$@"; do args+=("$image" "8,1,1,3,255"); done
-  gmic -v - "${args[@]}" remove[-1] to_rgb mul -1 add 255 append x,0 mul -1 add 255 -o "$target"
-}
+source scripts/gallery-join.sh
 exemplar() { "$t" image "$1" --lambda 0 --size "$2" -o "$3" --quiet; } # the exemplar tiled, as it is
 
 # (a) Figs. 7-8: leopard spots synthesized over the bunny's box at 128, rendered and cut open.

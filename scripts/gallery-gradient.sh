@@ -18,13 +18,7 @@ trap 'rm -rf "$tmp"' EXIT
 z=0.50390625 # (64 + 0.5) / 128
 voxels() { python3 scripts/nrrd-slice.py "$1" 64 4 "$tmp/v.ppm" && gmic -v - "$tmp/v.ppm" -o "$2"; }
 slice() { "$t" solid "$1" --slice "z=$z" --resolution 512 -o "$2" --quiet "${@:3}"; }
-# Images left to right, 8 white pixels apart (append pads with 0, so it appends the inverted images).
-join() {
-  local target=$1 args=()
-  shift
-  for image in "$@"; do args+=("$image" "8,1,1,3,255"); done
-  gmic -v - "${args[@]}" remove[-1] to_rgb mul -1 add 255 append x,0 mul -1 add 255 -o "$target"
-}
+source scripts/gallery-join.sh
 
 # (a) Fig. 6/11: 'balls' without and with the mask; with it the balls' edges stay sharp, while
 # the background keeps its C1 colour ramps.

@@ -57,10 +57,6 @@ struct BucketGrid {
     for (int a = 0; a < 3; ++a) buckets[a] = (solid.voxels[a] - 1) / h + 1;
   }
   std::int64_t layerSize() const { return std::int64_t(buckets.x()) * buckets.y(); }
-  int ownerOf(int axis, int b) const {
-    const int owner = (spacing * b + controlSpacing / 2) / controlSpacing;
-    return std::min(owner, controls[axis] - 1);
-  }
   // Buckets [begin, end) along `axis` owned by control i.
   int ownedBegin(int axis, int i) const {
     if (i == 0) return 0;

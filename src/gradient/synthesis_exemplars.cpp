@@ -14,12 +14,7 @@ constexpr int kJointHalf = 4;  // leading crossbar dimensions of each crossbar i
 
 // Gray or RGB: alpha is dropped.
 Image colorsOf(const Image& image) {
-  const int keep = image.channels >= 3 ? 3 : 1;
-  if (keep == image.channels) return image;
-  Image colors(image.width, image.height, keep);
-  for (std::size_t p = 0; p < image.pixelCount(); ++p)
-    for (int c = 0; c < keep; ++c) colors.pixels[p * keep + c] = image.pixels[p * image.channels + c];
-  return colors;
+  return image.withChannels(image.channels >= 3 ? 3 : 1);
 }
 
 void checkOptions(const GradientExemplarOptions& options) {
