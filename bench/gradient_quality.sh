@@ -6,9 +6,10 @@
 # RES/exemplar side; gradient always works at that scale). `texsynth eval` measures each against its
 # exemplar: volumes on SLICES slices per axis (eval --slices, the mean of the three axes), the image
 # as it is. Prints one Markdown table, rows exemplar x method: coherence, completeness, histogram,
-# sharpness, periodicity (eval's lattice measure: the share of patches repeated at the most common
-# offset) and the wall seconds of the synthesis command, the exemplar analysis cached (a warm-up run
-# per exemplar and method fills a fresh cache first; its one-off time is listed under the table).
+# sharpness, periodicity (the share of patches repeated at the most common offset), lattice (the
+# strongest shifted repeat of the luminance detail) and the wall seconds of the synthesis command,
+# the exemplar analysis cached (a warm-up run per exemplar and method fills a fresh cache first;
+# its one-off time is listed under the table).
 #
 # Brick mask: GIMP ships no mask for Stone/brick; its joints are the darkest 15% of its pixels, which
 # `make_test_volumes --dark-mask-from` writes as a mask (build/bench/make_test_volumes). BRICK_MASK names
@@ -101,8 +102,8 @@ synthesize() {
 
 echo "# Solid synthesis quality: ${res}³ volumes (eval on $slices slices per axis) and ${res}² optimize images, $(nproc) cores"
 echo
-echo "| exemplar | method | coherence | completeness | histogram | sharpness | periodicity (lattice) | seconds |"
-echo "|---|---|---:|---:|---:|---:|---:|---:|"
+echo "| exemplar | method | coherence | completeness | histogram | sharpness | periodicity | lattice | seconds |"
+echo "|---|---|---:|---:|---:|---:|---:|---:|---:|"
 warmups="$out/warmups.tsv"
 notes=()
 : >"$warmups"
@@ -145,12 +146,12 @@ import json, sys
 doc = json.load(open(sys.argv[1]))
 m = doc["mean"] if "mean" in doc else doc["metrics"]  # a volume's slices, or the image
 print(f"| {sys.argv[2]} | {sys.argv[3]} | {m['coherence']:.2f} | {m['completeness']:.2f} | {m['histogram']:.2f} "
-      f"| {m['sharpness']:.3f} | {m['periodicity']:.3f} | {float(sys.argv[4]):.2f} |")
+      f"| {m['sharpness']:.3f} | {m['periodicity']:.3f} | {m['lattice']:.3f} | {float(sys.argv[4]):.2f} |")
 PY
   done
 done
 echo
-echo "Lower is better for coherence, completeness, histogram (0..255) and periodicity; sharpness is the mean"
+echo "Lower is better for coherence, completeness, histogram (0..255), periodicity and lattice; sharpness is the mean"
 echo "gradient magnitude over the exemplar's (1 = as crisp). Seconds: the synthesis command, analysis cached."
 echo "Volumes: the unit cube at ${res}³, one exemplar pixel per voxel; optimize: --tileable never."
 for note in "${notes[@]}"; do echo "$note"; done

@@ -1,5 +1,5 @@
-// texsynth eval EXEMPLAR OUTPUT: coherence, completeness, histogram, periodicity and sharpness of a
-// result.
+// texsynth eval EXEMPLAR OUTPUT: coherence, completeness, histogram, periodicity, lattice and
+// sharpness of a result.
 #include <cstdio>
 
 #include "cli_common.h"
@@ -16,24 +16,29 @@ using nlohmann::json;
 
 static json toJson(const QualityMetrics& m) {
   return {{"coherence", m.coherence},     {"completeness", m.completeness}, {"histogram", m.histogram},
-          {"periodicity", m.periodicity}, {"sharpness", m.sharpness},       {"seconds", m.seconds}};
+          {"periodicity", m.periodicity}, {"lattice", m.lattice},           {"sharpness", m.sharpness},
+          {"seconds", m.seconds}};
 }
 
+// One row of the volume table; lattice comes after sharpness so that scripts reading the first
+// five metric columns keep working.
 static void printRow(const char* label, const QualityMetrics& m) {
-  std::printf("%-10s %10.3f %13.3f %10.3f %12.3f %10.3f %8.2fs\n", label, m.coherence, m.completeness, m.histogram,
-              m.periodicity, m.sharpness, m.seconds);
+  std::printf("%-10s %10.3f %13.3f %10.3f %12.3f %10.3f %8.3f %8.2fs\n", label, m.coherence, m.completeness,
+              m.histogram, m.periodicity, m.sharpness, m.lattice, m.seconds);
 }
 
 Command registerEvalCommand(CLI::App& app, const GlobalOptions& globals) {
-  auto* sub =
-      app.add_subcommand("eval",
-                         "Measure a synthesized image or volume against its exemplar.\n"
-                         "coherence: RMS distance of output patches to their nearest exemplar patch (lower = "
-                         "no invented content); completeness: the same from exemplar to output (lower = "
-                         "nothing of the exemplar missing); histogram: mean per-channel Wasserstein-1 "
-                         "distance; periodicity: share of sampled patches repeated at the most common offset "
-                         "(tiling scores high, good synthesis near 0); sharpness: mean gradient magnitude over the "
-                         "exemplar's (1 = as crisp, lower = blurrier). Colors on 0..255.");
+  auto* sub = app.add_subcommand("eval",
+                                 "Measure a synthesized image or volume against its exemplar.\n"
+                                 "coherence: RMS distance of output patches to their nearest exemplar patch (lower = "
+                                 "no invented content); completeness: the same from exemplar to output (lower = "
+                                 "nothing of the exemplar missing); histogram: mean per-channel Wasserstein-1 "
+                                 "distance; periodicity: share of sampled patches repeated at the most common offset "
+                                 "(tiling scores high, good synthesis near 0); lattice: strongest autocorrelation peak "
+                                 "of the luminance detail away from the origin (a shifted repeat of the same content, "
+                                 "as in a tiling or a grid of copies, scores high; noise and good synthesis near 0); "
+                                 "sharpness: mean gradient magnitude over the exemplar's (1 = as crisp, lower = "
+                                 "blurrier). Colors on 0..255.");
   struct Args {
     std::string exemplar, output;
     MetricOptions options;
@@ -73,8 +78,8 @@ Command registerEvalCommand(CLI::App& app, const GlobalOptions& globals) {
               report["z"] = toJson(q.axis[2]);
               report["mean"] = toJson(q.mean);
               if (globals.json) return printJson(report);
-              std::printf("%-10s %10s %13s %10s %12s %10s %9s\n", "slices", "coherence", "completeness", "histogram",
-                          "periodicity", "sharpness", "time");
+              std::printf("%-10s %10s %13s %10s %12s %10s %8s %9s\n", "slices", "coherence", "completeness",
+                          "histogram", "periodicity", "sharpness", "lattice", "time");
               const char* names[3] = {"x-normal", "y-normal", "z-normal"};
               for (int a = 0; a < 3; ++a) printRow(names[a], q.axis[a]);
               printRow("mean", q.mean);
@@ -87,6 +92,8 @@ Command registerEvalCommand(CLI::App& app, const GlobalOptions& globals) {
             std::printf("completeness %8.3f   (lower is better)\n", m.completeness);
             std::printf("histogram    %8.3f   (lower is better)\n", m.histogram);
             std::printf("periodicity  %8.3f   (lower is better; tiling scores high)\n", m.periodicity);
+            std::printf("lattice      %8.3f   (lower is better; a shifted repeat of the same content scores high)\n",
+                        m.lattice);
             std::printf("sharpness    %8.3f   (1 = as crisp as the exemplar; lower is blurrier)\n", m.sharpness);
             std::printf("time         %8.2fs\n", m.seconds);
           },

@@ -6,6 +6,7 @@
 #include "metrics_detail.h"
 #include "texsynth/core/error.h"
 #include "texsynth/eval/histogram_distance.h"
+#include "texsynth/eval/lattice.h"
 #include "texsynth/eval/periodicity.h"
 #include "texsynth/eval/sharpness.h"
 
@@ -58,6 +59,7 @@ QualityMetrics evaluateRgb255(const PatchIndex& exemplarIndex, const Image& outp
   metrics.sharpness = exemplarGradient > 0 ? meanGradientMagnitude(output) / exemplarGradient : 0.0;
   metrics.periodicity =
       periodicity(outputIndex, {options.periodicitySamples, options.duplicateThreshold, options.seed});
+  metrics.lattice = latticeStrength(output);
   return metrics;
 }
 

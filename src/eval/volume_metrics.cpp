@@ -49,7 +49,7 @@ VolumeQuality evaluateVolume(const Image& exemplar, const Volume& volume, const 
   for (int axis = 0; axis < 3; ++axis) {
     const auto axisStart = std::chrono::steady_clock::now();
     const int n = extent(volume, axis);
-    double coherenceSquares = 0, completenessSquares = 0, histogram = 0, periodicity = 0, sharpness = 0;
+    double coherenceSquares = 0, completenessSquares = 0, histogram = 0, periodicity = 0, lattice = 0, sharpness = 0;
     for (int i = 0; i < slices; ++i) {
       const int index = int(std::floor((i + 0.5) * n / slices));
       const std::string what = std::string("volume slice ") + kAxisNames[axis] + "=" + std::to_string(index);
@@ -60,6 +60,7 @@ VolumeQuality evaluateVolume(const Image& exemplar, const Volume& volume, const 
       histogram += m.histogram;
       sharpness += m.sharpness;
       periodicity += m.periodicity;
+      lattice += m.lattice;
     }
     QualityMetrics& a = quality.axis[axis];
     a.coherence = std::sqrt(coherenceSquares / slices);
@@ -67,6 +68,7 @@ VolumeQuality evaluateVolume(const Image& exemplar, const Volume& volume, const 
     a.histogram = histogram / slices;
     a.sharpness = sharpness / slices;
     a.periodicity = periodicity / slices;
+    a.lattice = lattice / slices;
     a.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - axisStart).count();
   }
   QualityMetrics& mean = quality.mean;
@@ -76,6 +78,7 @@ VolumeQuality evaluateVolume(const Image& exemplar, const Volume& volume, const 
     mean.histogram += a.histogram / 3;
     mean.sharpness += a.sharpness / 3;
     mean.periodicity += a.periodicity / 3;
+    mean.lattice += a.lattice / 3;
   }
   mean.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return quality;

@@ -99,6 +99,28 @@ TEST(Cli, EvalOfExemplarAgainstItselfIsPerfect) {
   EXPECT_NE(r.out.find("\"completeness\": 0.0"), std::string::npos) << r.out;
 }
 
+TEST(Cli, EvalReportsEveryMetricAndLatticeSeesATiling) {
+  test::TempDir dir;
+  const Image tile = test::makeTestPattern(40, 40, 3);
+  writeImage(dir.file("ex.png"), tile);
+  writeImage(dir.file("tiled.png"), tile.tiled(120, 100));
+  RunResult r = runTexsynth("eval " + dir.file("ex.png") + " " + dir.file("tiled.png"), dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::string out = "\n" + r.out;
+  std::size_t at = 0;  // one line each, in this order
+  for (const char* name : {"coherence", "completeness", "histogram", "periodicity", "lattice", "sharpness", "time"}) {
+    at = out.find(std::string("\n") + name + " ", at);
+    EXPECT_NE(at, std::string::npos) << name << " in\n" << r.out;
+  }
+  EXPECT_NE(r.out.find("a shifted repeat of the same content scores high"), std::string::npos) << r.out;
+  r = runTexsynth("eval " + dir.file("ex.png") + " " + dir.file("tiled.png") + " --json", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto metrics = nlohmann::json::parse(r.out)["metrics"];
+  EXPECT_GT(metrics["lattice"].get<double>(), 0.8) << r.out;
+  EXPECT_LE(metrics["lattice"].get<double>(), 1.0) << r.out;
+  EXPECT_TRUE(metrics.contains("completeness")) << r.out;
+}
+
 TEST(Cli, RenderWritesImageAndFailedRenderKeepsOldFile) {
   test::TempDir dir;
   Mesh quad;
@@ -172,6 +194,7 @@ TEST(Cli, EvalAndRenderAcceptVolumes) {
   ASSERT_EQ(r.exitCode, 0) << r.err;
   auto report = nlohmann::json::parse(r.out);
   EXPECT_EQ(report["z"]["coherence"].get<double>(), 0.0);
+  for (const char* axis : {"x", "y", "z", "mean"}) EXPECT_TRUE(report[axis].contains("lattice")) << r.out;
   EXPECT_GT(report["x"]["coherence"].get<double>(), 0.0);
   r = runTexsynth("render " + dir.file("stack.nrrd") + " -o " + dir.file("montage.png"), dir);
   ASSERT_EQ(r.exitCode, 0) << r.err;

@@ -1,5 +1,5 @@
 // Real peer: G'MIC's patch-based synthesis of a real GIMP stone pattern against a plain
-// tiling of the same exemplar. Periodicity must tell them apart.
+// tiling of the same exemplar. Periodicity and lattice must tell them apart.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -37,12 +37,17 @@ TEST(GmicPeer, TilingIsFarMorePeriodicThanGmicSynthesis) {
   const QualityMetrics gmic = evaluateImage(exemplar, synthesized);
   RecordProperty("tiling_periodicity", std::to_string(tiling.periodicity));
   RecordProperty("gmic_periodicity", std::to_string(gmic.periodicity));
-  std::printf("tiling: coherence %.3f completeness %.3f histogram %.3f periodicity %.3f (%.2fs)\n", tiling.coherence,
-              tiling.completeness, tiling.histogram, tiling.periodicity, tiling.seconds);
-  std::printf("gmic:   coherence %.3f completeness %.3f histogram %.3f periodicity %.3f (%.2fs)\n", gmic.coherence,
-              gmic.completeness, gmic.histogram, gmic.periodicity, gmic.seconds);
+  RecordProperty("tiling_lattice", std::to_string(tiling.lattice));
+  RecordProperty("gmic_lattice", std::to_string(gmic.lattice));
+  std::printf("tiling: coherence %.3f completeness %.3f histogram %.3f periodicity %.3f lattice %.3f (%.2fs)\n",
+              tiling.coherence, tiling.completeness, tiling.histogram, tiling.periodicity, tiling.lattice,
+              tiling.seconds);
+  std::printf("gmic:   coherence %.3f completeness %.3f histogram %.3f periodicity %.3f lattice %.3f (%.2fs)\n",
+              gmic.coherence, gmic.completeness, gmic.histogram, gmic.periodicity, gmic.lattice, gmic.seconds);
   EXPECT_GT(tiling.periodicity, 0.5);
   EXPECT_LT(gmic.periodicity, tiling.periodicity / 2);
+  EXPECT_GT(tiling.lattice, 0.8);
+  EXPECT_LT(gmic.lattice, tiling.lattice / 2);
   // Both reuse exemplar content, so both stay coherent; the tiling invents only its seams.
   EXPECT_LT(gmic.coherence, 40.0);
   EXPECT_LT(tiling.completeness, 1e-9);

@@ -28,6 +28,7 @@ void expectSame(const QualityMetrics& a, const QualityMetrics& b) {
   EXPECT_DOUBLE_EQ(a.completeness, b.completeness);
   EXPECT_DOUBLE_EQ(a.histogram, b.histogram);
   EXPECT_DOUBLE_EQ(a.periodicity, b.periodicity);
+  EXPECT_DOUBLE_EQ(a.lattice, b.lattice);
 }
 
 TEST(EvaluateVolume, StackedImageMatchesImageMetricsAlongTheStackingAxis) {

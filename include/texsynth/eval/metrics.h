@@ -9,6 +9,10 @@
 //   histogram     mean over R, G, B of the 1D Wasserstein-1 distance of the value distributions.
 //   periodicity   share of sampled output patches that repeat at the single most common offset
 //                 (tiling scores high, good synthesis near 0); see periodicity.h.
+//   lattice       the largest normalized autocorrelation of the output's luminance detail
+//                 outside its central lobe (0..1: a shifted repeat of the same content, as in a
+//                 tiling or a grid of copies, scores high; noise and good synthesis near 0); see
+//                 lattice.h.
 //   sharpness     mean gradient magnitude of the output over the exemplar's (1 = as crisp,
 //                 below 1 blurrier); see sharpness.h.
 //
@@ -32,7 +36,7 @@ struct MetricOptions {
 };
 
 struct QualityMetrics {
-  double coherence = 0, completeness = 0, histogram = 0, periodicity = 0, sharpness = 0;
+  double coherence = 0, completeness = 0, histogram = 0, periodicity = 0, lattice = 0, sharpness = 0;
   double seconds = 0;  // wall time spent computing these metrics
 };
 
@@ -52,7 +56,8 @@ struct VolumeQuality {
 // borders. Slice image axes (u right, v down): normal x -> (y, z); normal y -> (x, z);
 // normal z -> (x, y); so a volume made by stacking the exemplar along z has z-slices equal to
 // the exemplar. Per axis, coherence and completeness are the RMS over all patches of all its
-// slices (each slice has as many patches), histogram and periodicity the mean over its slices.
+// slices (each slice has as many patches), histogram, periodicity, lattice and sharpness the mean
+// over its slices.
 // Throws ParameterError for bad options, slicesPerAxis above an extent, or slices smaller than
 // the patch size.
 VolumeQuality evaluateVolume(const Image& exemplar, const Volume& volume, const MetricOptions& options = {});
