@@ -1,7 +1,7 @@
 // texsynth demo: a tour on built-in defaults. Analyses a real exemplar (GIMP's pink marble from
-// gimp-data), renders a real mesh (CGAL's bunny from libcgal-demo), measures the plain-tiling
-// baseline the synthesizers must beat, vectorizes and edits a small gradient solid (demo_gradient.cpp),
-// and writes a short report with pictures. Falls back to built-in procedural data when those
+// gimp-data), renders a real mesh (CGAL's bunny from libcgal-demo), synthesizes 2D textures and
+// scores them against the plain-tiling baseline (demo_pixel.cpp), vectorizes and edits a small gradient solid
+// (demo_gradient.cpp), and writes a short report with pictures. Falls back to built-in procedural data when those
 // packages are absent.
 #include <chrono>
 #include <cmath>
@@ -12,6 +12,7 @@
 #include "cli_common.h"
 #include "demo_fallbacks.h"
 #include "demo_gradient.h"
+#include "demo_pixel.h"
 #include "image_layout.h"
 #include "number_checks.h"
 #include "texsynth/core/atomic_file.h"
@@ -112,13 +113,7 @@ std::string markdownReport(const json& r) {
   md << "- rendered in " << fixed3(r["mesh"]["render_seconds"]) << " s (two views). The second picture is a solid "
      << "texture synthesized from the exemplar by tiling and deformation (stacked along x, y and z, blended by the "
      << "normal), evaluated at every pixel: " << fixed3(r["mesh"]["solid_render_seconds"]) << " s.\n\n";
-  md << "## The baseline to beat\n\nA 2x2 tiling of the exemplar, scored by `texsynth eval`:\n\n";
-  const auto& m = r["tiling_baseline"];
-  md << "| coherence | completeness | histogram | periodicity |\n|---:|---:|---:|---:|\n| " << fixed3(m["coherence"])
-     << " | " << fixed3(m["completeness"]) << " | " << fixed3(m["histogram"]) << " | " << fixed3(m["periodicity"])
-     << " |\n\n";
-  md << "Tiling copies the exemplar, so coherence is near 0, but its periodicity is high: a good synthesis keeps "
-        "coherence low and brings periodicity near 0.\n\n";
+  md << pixelMarkdown(r["pixel"], r["tiling_baseline"]);
   md << gradientMarkdown(r["gradient"]);
   return md.str();
 }
@@ -212,11 +207,13 @@ void runDemo(const DemoArgs& args, const GlobalOptions& globals) {
   metricOptions.seed = globals.seed;
   QualityMetrics tiling =
       evaluateImage(exemplar, exemplar.tiled(2 * exemplar.width, 2 * exemplar.height), metricOptions);
-  report["tiling_baseline"] = {{"coherence", tiling.coherence},
-                               {"completeness", tiling.completeness},
-                               {"histogram", tiling.histogram},
-                               {"periodicity", tiling.periodicity},
-                               {"seconds", tiling.seconds}};
+  report["tiling_baseline"] = metricsJson(tiling);
+  report["tiling_baseline"]["seconds"] = tiling.seconds;
+
+  progress->begin("2D synthesis", 1);
+  report["pixel"] = demoPixelSynthesis(exemplar, analysis, globals.seed, cacheDir, out);
+  progress->advance(1);
+  progress->end();
 
   progress->begin("gradient solids", 1);
   report["gradient"] = demoGradientSolids(exemplar, globals.seed, cacheDir, out);
@@ -227,18 +224,20 @@ void runDemo(const DemoArgs& args, const GlobalOptions& globals) {
   writeFileAtomically(out("report.md"), markdownReport(report));
   if (globals.json) printJson(report);
   say(globals, "wrote " + out("report.md") +
-                   " with exemplar.png, gaussian_stack.png, mesh.png, mesh_solid.png, gradient_magnified.png, "
+                   " with exemplar.png, gaussian_stack.png, mesh.png, mesh_solid.png, pixel_synthesis.png, "
+                   "gradient_magnified.png, "
                    "gradient_edit.png, gradient_synthesized.png and gradient_solid.tsgs");
 }
 
 }  // namespace
 
 Command registerDemoCommand(CLI::App& app, const GlobalOptions& globals) {
-  auto* sub = app.add_subcommand(
-      "demo",
-      "A tour on built-in defaults: analyse a real exemplar (GIMP's pink marble), render a real "
-      "mesh (CGAL's bunny) plain and solid-textured, vectorize and edit a small gradient solid, and write a "
-      "report with pictures into DIR");
+  auto* sub =
+      app.add_subcommand("demo",
+                         "A tour on built-in defaults: analyse a real exemplar (GIMP's pink marble), render a real "
+                         "mesh (CGAL's bunny) plain and solid-textured, synthesize and score 2D textures, vectorize "
+                         "and edit a small gradient solid, and write a "
+                         "report with pictures into DIR");
   auto args = std::make_shared<DemoArgs>();
   sub->add_option("-o,--output", args->outputDir, "Directory for the report and pictures")->capture_default_str();
   inputFiles(sub->add_option("--exemplar", args->exemplar,

@@ -64,6 +64,7 @@ const std::vector<ModeFlag> kImageModeFlags = {
     {"--blend-exponent", {"tile-blend"}},
     {"--passes", {"parallel"}},
     {"--subpasses", {"parallel"}},
+    {"--footprint", {"parallel"}},
     {"--jitter", {"parallel", "optimize"}},
     {"--levels", {"parallel", "optimize"}},
     {"--neighborhood", {"parallel", "optimize"}},
@@ -71,6 +72,9 @@ const std::vector<ModeFlag> kImageModeFlags = {
     {"--coords", {"parallel", "optimize"}},
     {"--solver", {"optimize"}},
     {"--iterations", {"optimize"}},
+    {"--coverage", {"optimize"}},
+    {"--start", {"optimize"}},
+    {"--vote-exponent", {"optimize"}},
 };
 
 // Where the library's parameters come from on `image`'s command line.
@@ -92,6 +96,7 @@ ParameterSources imageParameterSources(const ImageArgs& args) {
           {"weightExponent", fromFlag("--blend-exponent")},
           {"passes", fromFlag("--passes")},
           {"subpasses", fromFlag("--subpasses")},
+          {"coarsestFootprint", fromFlag("--footprint")},
           {"jitter", fromFlag("--jitter")},
           {"levels", fromFlag("--levels")},
           {"levelCount", fromFlag("--levels")},
@@ -100,7 +105,10 @@ ParameterSources imageParameterSources(const ImageArgs& args) {
           {"levelNeighborhoodSizes", fromFlag("--neighborhood")},
           {"similarCount", fromFlag("-k")},
           {"solver", fromFlag("--solver")},
-          {"iterations", fromFlag("--iterations")}};
+          {"iterations", fromFlag("--iterations")},
+          {"coverageWeight", fromFlag("--coverage")},
+          {"start", fromFlag("--start")},
+          {"voteExponent", fromFlag("--vote-exponent")}};
 }
 
 // Source coordinates are pixel indices into exemplars of up to 65536 pixels a side: only float
@@ -275,12 +283,32 @@ Command registerImageCommand(CLI::App& app, const GlobalOptions& globals) {
                   "parallel: neighborhood size N per level, coarsest first, the last repeating (default 5, as L&H "
                   "2005; e.g. 5,7). optimize: sizes run in turn at every level (default 17,9, Han et al. Table 2)");
   sub->add_option("--iterations", args->iterations,
-                  "optimize: most E+M iterations per level and neighborhood size (stops when no match changes)")
-      ->capture_default_str()
+                  "optimize: most E+M iterations per level and neighborhood size (stops when no match changes; "
+                  "default 2)")
       ->check(integerIn(1, 100));
+  sub->add_option("--coverage", args->coverage,
+                  "optimize (discrete): weight of the exemplar-coverage term, which makes over-used exemplar regions "
+                  "cost more and unused ones less so that no part of the exemplar is dropped (default 0.15; 0 = the "
+                  "plain energy)")
+      ->check(CLI::Range(0.0, 100.0));
+  sub->add_option("--vote-exponent", args->voteExponent,
+                  "optimize (discrete): the E-step weighs each match's vote by (its mean color distance per pixel + "
+                  "0.01)^-E, so well-aligned matches decide and thin features survive (default 4; 0 = equal votes, "
+                  "Han et al.)")
+      ->check(CLI::Range(0.0, 16.0));
+  sub->add_option("--start", args->start,
+                  "optimize (discrete): start from the parallel method's result (keeps every part of the exemplar, "
+                  "no lattice), from random exemplar patches, or from random pixels (Han et al.)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"parallel", "patches", "pixels"}));
   sub->add_option("-k,--similar", args->similarCount,
                   "parallel, optimize: k of the k-coherence similarity sets (default: parallel 2, optimize 4)")
       ->check(integerIn(1, 64));
+  sub->add_option("--footprint", args->footprint,
+                  "parallel: start at the coarsest level whose neighborhood spans at most this fraction of the "
+                  "exemplar's smaller side, from random coordinates (default 0.5; 0 = Lefebvre & Hoppe 2005's "
+                  "coarsest level from the tiled exemplar, which keeps tileable exemplars on a lattice)")
+      ->check(CLI::Range(0.0, 16.0));
   sub->add_option("--subpasses", args->subpasses,
                   "parallel: s, for s^2 subpasses per correction pass (1 = all pixels at once)")
       ->capture_default_str()

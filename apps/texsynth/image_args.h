@@ -24,9 +24,12 @@ struct ImageArgs {
   // parallel
   int passes = 2, subpasses = 2;
   std::string jitter;
+  float footprint = -1;  // -1 = the library's default
   // optimize
   std::string solver = "discrete";
-  int iterations = 3;
+  int iterations = -1;                     // -1 = the library's default
+  float coverage = -1, voteExponent = -1;  // -1 = the library's default
+  std::string start = "parallel";
 };
 
 // Lefebvre & Hoppe 2005 over the window (x, y, width, height); writes --coords if asked.

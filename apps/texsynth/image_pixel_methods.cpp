@@ -1,6 +1,7 @@
 // The pixel-based methods of `texsynth image`: they synthesize source coordinates into the
 // exemplar (written with --coords, re-applied to other maps with --apply-coords).
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "image_args.h"
@@ -58,6 +59,7 @@ Image synthesizeParallelWindow(const Image& exemplar, const ImageArgs& args, con
   options.seed = globals.seed;
   options.passes = args.passes;
   options.subpassGrid = args.subpasses;
+  if (args.footprint >= 0) options.coarsestFootprint = args.footprint;
   if (!args.jitter.empty()) {
     auto [coarse, rest] = parseFloatPair(args.jitter, "--jitter");
     options.jitter.assign(analysis.levelCount(), rest);
@@ -77,9 +79,11 @@ Image synthesizeOptimized(const Image& exemplar, const ImageArgs& args, int widt
   options.solver = parseOptimizationSolver(args.solver);
   if (args.levels >= 0) options.levels = args.levels;
   if (!args.neighborhoods.empty()) options.neighborhoodSizes = parseNeighborhoods(args.neighborhoods);
-  options.maxIterations = args.iterations;
+  if (args.iterations > 0) options.maxIterations = args.iterations;
   if (!args.jitter.empty()) options.jitter = parseFloatPair(args.jitter, "--jitter").second;
   if (args.similarCount >= 0) options.similarCount = args.similarCount;
+  if (args.coverage >= 0) options.coverageWeight = args.coverage;
+  if (args.voteExponent >= 0) options.voteExponent = args.voteExponent;
   if (options.solver == OptimizationSolver::LeastSquares && !args.coords.empty())
     throw ParameterError("--coords",
                          "the least-squares solver blends colors, so it has no source coordinates; use "
@@ -88,7 +92,16 @@ Image synthesizeOptimized(const Image& exemplar, const ImageArgs& args, int widt
   std::vector<ExemplarAnalysis> analyses;
   for (const AnalysisOptions& analysisOptions : optimizationAnalysisOptions(options))
     analyses.push_back(analyzeExemplarCached(exemplar, analysisOptions, defaultCacheDirectory(), *progress));
-  TextureOptimizationResult result = optimizeTexture(analyses, options, width, height, *progress);
+  std::optional<SourceCoordinates> start;  // --start parallel: the parallel method's result, at its defaults
+  if (args.start == "parallel" && options.solver == OptimizationSolver::Discrete) {
+    ParallelSynthesisOptions parallel;
+    parallel.seed = globals.seed;
+    const ExemplarAnalysis analysis = analyzeExemplarCached(exemplar, {}, defaultCacheDirectory(), *progress);
+    start = synthesizeParallelCoordinates(analysis, parallel, 0, 0, width, height, *progress);
+  }
+  if (args.start == "pixels") options.start = OptimizationStart::RandomPixels;
+  TextureOptimizationResult result =
+      optimizeTexture(analyses, options, width, height, *progress, start ? &*start : nullptr);
   if (!args.coords.empty()) writeImage(args.coords, coordinateImage(result.coords));
 
   json iterations = json::array();

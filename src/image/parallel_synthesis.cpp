@@ -41,34 +41,56 @@ void validate(const ExemplarAnalysis& analysis, const ParallelSynthesisOptions& 
                                        std::to_string(options.jitter.size()));
   requireFiniteAtLeast("jitter", options.defaultJitter, 0.0f);
   for (float r : options.jitter) requireFiniteAtLeast("jitter", r, 0.0f);
+  requireFiniteAtLeast("coarsestFootprint", options.coarsestFootprint, 0.0f);
+  if (options.startPasses < 0)
+    throw ParameterError("startPasses", "must be >= 0, got " + std::to_string(options.startPasses));
 }
 
 }  // namespace
+
+int firstSynthesizedLevel(const ExemplarAnalysis& analysis, float coarsestFootprint) {
+  if (coarsestFootprint <= 0) return 0;
+  const double side = std::min(analysis.width, analysis.height);
+  for (int l = 0; l < analysis.levelCount(); ++l)
+    if (analysis.levels[l].neighborhoodSize * analysis.levels[l].spacing <= coarsestFootprint * side) return l;
+  return analysis.levelCount() - 1;
+}
 
 SourceCoordinates synthesizeParallelCoordinates(const ExemplarAnalysis& analysis,
                                                 const ParallelSynthesisOptions& options, int x0, int y0, int w, int h,
                                                 Progress& progress) {
   validate(analysis, options, x0, y0, w, h);
   const int levels = analysis.levelCount();
-  auto margin = [&](int level) { return correctionMargin(analysis, level, options.passes, options.subpassGrid); };
+  const int first = firstSynthesizedLevel(analysis, options.coarsestFootprint);
+  // From random coordinates, the first level needs more passes to grow coherent patches.
+  auto passes = [&](int level) {
+    return level == first && options.coarsestFootprint > 0 && options.passes > 0
+               ? std::max(options.startPasses, options.passes)
+               : options.passes;
+  };
+  auto margin = [&](int level) { return correctionMargin(analysis, level, passes(level), options.subpassGrid); };
 
   // corrected[l]: the region level l must deliver; the finest delivers the window itself.
   std::vector<Region> corrected(static_cast<std::size_t>(levels));
   corrected[levels - 1] = {x0, y0, w, h};
-  for (int l = levels - 1; l > 0; --l) corrected[l - 1] = corrected[l].grown(margin(l)).parents();
+  for (int l = levels - 1; l > first; --l) corrected[l - 1] = corrected[l].grown(margin(l)).parents();
 
-  progress.begin("parallel synthesis", levels);
+  progress.begin("parallel synthesis", levels - first);
   SourceCoordinates coords;
-  for (int l = 0; l < levels; ++l) {
+  for (int l = first; l < levels; ++l) {
     const int spacing = analysis.levels[l].spacing;
     const Region start = corrected[l].grown(margin(l));
-    coords = l == 0 ? tilingCoordinates(start.x0, start.y0, start.width, start.height, spacing, analysis.width,
-                                        analysis.height)
-                    : upsampleCoordinates(coords, start.coordinates(), spacing, analysis.width, analysis.height);
+    if (l > first)
+      coords = upsampleCoordinates(coords, start.coordinates(), spacing, analysis.width, analysis.height);
+    else if (options.coarsestFootprint > 0)
+      coords = randomCoordinates(start.x0, start.y0, start.width, start.height, options.seed, l, analysis.width,
+                                 analysis.height);
+    else
+      coords =
+          tilingCoordinates(start.x0, start.y0, start.width, start.height, spacing, analysis.width, analysis.height);
     const float strength = options.jitter.empty() ? options.defaultJitter : options.jitter[l];
     jitterCoordinates(coords, l, spacing, strength, options.seed, analysis.width, analysis.height);
-    for (int pass = 0; pass < options.passes; ++pass)
-      coords = correctCoordinates(analysis, l, coords, options.subpassGrid);
+    for (int pass = 0; pass < passes(l); ++pass) coords = correctCoordinates(analysis, l, coords, options.subpassGrid);
     TS_CHECK(coords.x0 == corrected[l].x0 && coords.width == corrected[l].width);
     TS_CHECK(coords.y0 == corrected[l].y0 && coords.height == corrected[l].height);
     progress.advance(1);

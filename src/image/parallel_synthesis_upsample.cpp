@@ -28,6 +28,18 @@ SourceCoordinates tilingCoordinates(int x0, int y0, int width, int height, int s
   return out;
 }
 
+SourceCoordinates randomCoordinates(int x0, int y0, int width, int height, std::uint64_t seed, int level,
+                                    int exemplarWidth, int exemplarHeight) {
+  SourceCoordinates out(x0, y0, width, height);
+  for (int y = y0; y < y0 + height; ++y)
+    for (int x = x0; x < x0 + width; ++x) {
+      const std::uint64_t key = hashKey(seed, latticeId(x, y), std::uint64_t(level), 0x57a7);
+      out.at(x, y)[0] = std::int32_t(uniformBelow(key, std::uint32_t(exemplarWidth)));
+      out.at(x, y)[1] = std::int32_t(uniformBelow(mix64(key), std::uint32_t(exemplarHeight)));
+    }
+  return out;
+}
+
 SourceCoordinates upsampleCoordinates(const SourceCoordinates& parent, const SourceCoordinates& region, int spacing,
                                       int exemplarWidth, int exemplarHeight) {
   SourceCoordinates out(region.x0, region.y0, region.width, region.height);

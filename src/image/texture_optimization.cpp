@@ -35,6 +35,12 @@ void validate(const TextureOptimizationOptions& options) {
     throw ParameterError("iterations", "must be >= 1, got " + std::to_string(options.maxIterations));
   if (options.similarCount < 1)
     throw ParameterError("similarCount", "must be >= 1, got " + std::to_string(options.similarCount));
+  if (!(options.coverageWeight >= 0.0f && options.coverageWeight <= 100.0f))
+    throw ParameterError("coverageWeight", "must be in [0, 100], got " + std::to_string(options.coverageWeight));
+  if (!(options.voteExponent >= 0.0f && options.voteExponent <= 16.0f))
+    throw ParameterError("voteExponent", "must be in [0, 16], got " + std::to_string(options.voteExponent));
+  if (options.randomCandidates < 0 || options.randomCandidates > 1024)
+    throw ParameterError("randomCandidates", "must be in 0..1024, got " + std::to_string(options.randomCandidates));
   if (!(options.robustExponent > 0.0f && options.robustExponent <= 2.0f))
     throw ParameterError("robustExponent", "must be in (0, 2], got " + std::to_string(options.robustExponent));
 }
@@ -82,6 +88,19 @@ SourceCoordinates startCoordinates(const TextureOptimizationOptions& options, in
   return coords;
 }
 
+// A start given at the finest level, read at the coarsest: its pixel (x, y) is the finest
+// pixel `step` (x, y) (clamped to the given size; stack coordinates keep full resolution).
+SourceCoordinates sampledCoordinates(const SourceCoordinates& given, int width, int height, int step) {
+  SourceCoordinates out(0, 0, width, height);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const std::int32_t* s =
+          given.at(given.x0 + std::min(x * step, given.width - 1), given.y0 + std::min(y * step, given.height - 1));
+      out.at(x, y)[0] = s[0], out.at(x, y)[1] = s[1];
+    }
+  return out;
+}
+
 // Bilinear resampling on the torus to width x height: the least-squares output's start at a
 // finer level.
 Image upsampleColors(const Image& coarse, int width, int height) {
@@ -120,10 +139,14 @@ void optimizeScale(std::span<const ExemplarAnalysis> analyses, const TextureOpti
   }
 
   Matches matches(grid.activeCount());
+  int matchCount = 0;
   auto match = [&] {
-    return leastSquares
-               ? detail::matchLeastSquares(grid, analysis.levels[level].pca, *index, state.colors, matches)
-               : detail::matchDiscrete(grid, analysis.levels[level], analyses.back(), level, state.coords, matches);
+    if (leastSquares) return detail::matchLeastSquares(grid, analysis.levels[level].pca, *index, state.colors, matches);
+    const detail::UsageMap usage(grid, state.coords, options.coverageWeight);
+    const detail::DiscreteStepOptions step{
+        usage.active() ? &usage : nullptr, options.randomCandidates,
+        hashKey(options.seed, std::uint64_t(level), std::uint64_t(scale), std::uint64_t(matchCount++))};
+    return detail::matchDiscrete(grid, analysis.levels[level], analyses.back(), level, state.coords, step, matches);
   };
   auto record = [&](int iteration, std::int64_t changed, Clock::time_point start) {
     history.push_back({level, grid.size, iteration, detail::normalizedEnergy(grid, matches), changed,
@@ -138,7 +161,7 @@ void optimizeScale(std::span<const ExemplarAnalysis> analyses, const TextureOpti
     if (leastSquares)
       state.colors = detail::updateLeastSquares(grid, matches, options.robustExponent);
     else
-      state.coords = detail::updateDiscrete(grid, analyses.back(), level, state.coords, matches);
+      state.coords = detail::updateDiscrete(grid, analyses.back(), level, state.coords, options.voteExponent, matches);
     const std::int64_t changed = match();
     record(iteration, changed, start);
     progress.advance(1);
@@ -184,11 +207,15 @@ std::vector<AnalysisOptions> optimizationAnalysisOptions(const TextureOptimizati
 
 TextureOptimizationResult optimizeTexture(std::span<const ExemplarAnalysis> analyses,
                                           const TextureOptimizationOptions& options, int width, int height,
-                                          Progress& progress) {
+                                          Progress& progress, const SourceCoordinates* startCoords) {
   validate(options);
   if (width <= 0) throw ParameterError("width", "must be > 0, got " + std::to_string(width));
   if (height <= 0) throw ParameterError("height", "must be > 0, got " + std::to_string(height));
   validateAnalyses(analyses, options);
+  if (startCoords && (startCoords->width < width || startCoords->height < height))
+    throw ParameterError("start", "covers " + std::to_string(startCoords->width) + "x" +
+                                      std::to_string(startCoords->height) + " pixels, less than the " +
+                                      std::to_string(width) + "x" + std::to_string(height) + " output");
   const ExemplarAnalysis& base = analyses.back();
   const int levels = base.levelCount();
 
@@ -208,21 +235,30 @@ TextureOptimizationResult optimizeTexture(std::span<const ExemplarAnalysis> anal
   TextureOptimizationResult result;
   LevelState state;
   const int steps = int(options.neighborhoodSizes.size()) * (options.maxIterations + 1);
-  for (int level = 0; level < levels; ++level) {
+  // The first level whose largest neighborhood fits inside the exemplar without wrapping: at a
+  // coarser one a tiled copy of a small (toroidal) exemplar is a zero-energy optimum, and the
+  // optimization settles on that lattice (GIMP leaves, 50^2, at 256^2: lattice 0.5).
+  int first = 0;
+  const int largest = *std::max_element(options.neighborhoodSizes.begin(), options.neighborhoodSizes.end());
+  while (first + 1 < levels && !OptimizationGrid(base, first, widths[first], heights[first], largest).bounded) ++first;
+  for (int level = first; level < levels; ++level) {
     const int w = widths[level], h = heights[level];
     progress.begin("optimize level " + std::to_string(level + 1) + "/" + std::to_string(levels) + " (" +
                        std::to_string(w) + "x" + std::to_string(h) + ")",
                    steps);
     const OptimizationGrid start(base, level, w, h, options.neighborhoodSizes[0]);
-    if (level == 0)
+    const SourceCoordinates* given = startCoords;
+    if (level == first && given)
+      state.coords = sampledCoordinates(*given, w, h, 1 << (levels - 1 - level));
+    else if (level == first)
       state.coords = startCoordinates(options, w, h, start.spacing(), base.width, base.height);
     else if (!isLeastSquares(options))
       state.coords =
           upsampleCoordinates(state.coords, SourceCoordinates(0, 0, w, h), start.spacing(), base.width, base.height);
-    if (level > 0 && !isLeastSquares(options))
+    if (level > first && !isLeastSquares(options))
       jitterCoordinates(state.coords, level, start.spacing(), options.jitter, options.seed, base.width, base.height);
     if (isLeastSquares(options))
-      state.colors = level == 0 ? detail::colorsAt(start, state.coords) : upsampleColors(state.colors, w, h);
+      state.colors = level == first ? detail::colorsAt(start, state.coords) : upsampleColors(state.colors, w, h);
     for (std::size_t scale = 0; scale < options.neighborhoodSizes.size(); ++scale)
       optimizeScale(analyses, options, level, scale, state, result.history, progress);
     progress.end();

@@ -144,12 +144,14 @@ TEST(Cli, DemoRunsOnDefaultsAndWritesReport) {
   test::TempDir dir;
   RunResult r = runTexsynth("demo -o " + dir.file("demo") + " --quiet", dir);
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  for (const char* name :
-       {"report.md", "report.json", "exemplar.png", "gaussian_stack.png", "mesh.png", "mesh_solid.png",
-        "gradient_magnified.png", "gradient_edit.png", "gradient_synthesized.png", "gradient_solid.tsgs"})
+  for (const char* name : {"report.md", "report.json", "exemplar.png", "gaussian_stack.png", "mesh.png",
+                           "mesh_solid.png", "pixel_synthesis.png", "gradient_magnified.png", "gradient_edit.png",
+                           "gradient_synthesized.png", "gradient_solid.tsgs"})
     EXPECT_TRUE(fs::exists(dir.file(std::string("demo/") + name))) << name;
   std::string report = readFileBytes(dir.file("demo/report.json"));
   EXPECT_NE(report.find("periodicity"), std::string::npos);
+  EXPECT_NE(report.find("lattice"), std::string::npos);
+  EXPECT_NE(report.find("\"optimize\""), std::string::npos);
   EXPECT_NE(report.find("rms_error_255"), std::string::npos);
   // A second run finds the analysis in the cache.
   r = runTexsynth("demo -o " + dir.file("demo2") + " --quiet --json", dir);

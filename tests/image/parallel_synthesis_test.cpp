@@ -93,8 +93,8 @@ TEST(ParallelSynthesis, CoordinatesStayInsideTheExemplar) {
 
 TEST(ParallelSynthesis, ZeroJitterWithoutCorrectionIsPlainTiling) {
   const ExemplarAnalysis& analysis = patternAnalysis();
-  SourceCoordinates coords =
-      synthesizeParallelCoordinates(analysis, {.passes = 0, .defaultJitter = 0.0f}, -9, 4, 70, 50);
+  SourceCoordinates coords = synthesizeParallelCoordinates(
+      analysis, {.passes = 0, .defaultJitter = 0.0f, .coarsestFootprint = 0.0f}, -9, 4, 70, 50);
   // The upsampled start is S(p) = p + constant (mod m): a shifted tiling of the exemplar.
   const std::int32_t* origin = coords.at(-9, 4);
   for (int y = 4; y < 54; ++y)
@@ -136,6 +136,33 @@ TEST(ParallelSynthesis, RealExemplarIsFarLessPeriodicThanTiling) {
   EXPECT_LT(jittered, 0.1);
 }
 
+// A GIMP pattern tiles, so from L&H 2005's tiled start the corrections keep a jittered tiling:
+// a lattice of repeats. The random start at a level whose neighborhoods fit in the exemplar
+// breaks it (leaves at 160^2: about 0.55 against 0.1).
+TEST(ParallelSynthesis, RandomStartLeavesNoLattice) {
+  auto path = gimpPattern("Plant/leaves.pat");
+  TS_REQUIRE_DATA(path);
+  const Image exemplar = test::loadPatternRgb(*path, 50);
+  const ExemplarAnalysis analysis = analyzeExemplar(exemplar);
+  auto latticeOf = [&](const ParallelSynthesisOptions& options) {
+    return evaluateImage(exemplar, synthesizeParallel(analysis, options, 0, 0, 160, 160)).lattice;
+  };
+  const double tiledStart = latticeOf({.coarsestFootprint = 0.0f});
+  const double randomStart = latticeOf({});
+  EXPECT_LT(randomStart, 0.5 * tiledStart) << "random start " << randomStart << " tiled start " << tiledStart;
+  EXPECT_LT(randomStart, 0.2);
+  std::printf("lattice: tiled start %.3f, random start %.3f\n", tiledStart, randomStart);
+}
+
+TEST(ParallelSynthesis, StartsAtTheCoarsestLevelThatFitsTheExemplar) {
+  const ExemplarAnalysis& analysis = patternAnalysis();  // 32^2, N = 5
+  EXPECT_EQ(firstSynthesizedLevel(analysis, 0.0f), 0);
+  const int first = firstSynthesizedLevel(analysis, 1.0f);
+  EXPECT_LE(analysis.levels[first].neighborhoodSize * analysis.levels[first].spacing, 32);
+  ASSERT_GT(first, 0);
+  EXPECT_GT(analysis.levels[first - 1].neighborhoodSize * analysis.levels[first - 1].spacing, 32);
+}
+
 TEST(ParallelSynthesis, RejectsBadParameters) {
   const ExemplarAnalysis& analysis = patternAnalysis();
   test::expectParameterError([&] { synthesizeParallel(ExemplarAnalysis{}, {}, 0, 0, 8, 8); }, "analysis");
@@ -146,6 +173,9 @@ TEST(ParallelSynthesis, RejectsBadParameters) {
   test::expectParameterError([&] { synthesizeParallel(analysis, {.subpassGrid = 0}, 0, 0, 8, 8); }, "subpasses");
   test::expectParameterError([&] { synthesizeParallel(analysis, {.jitter = {0.4f}}, 0, 0, 8, 8); }, "jitter");
   test::expectParameterError([&] { synthesizeParallel(analysis, {.defaultJitter = -0.1f}, 0, 0, 8, 8); }, "jitter");
+  test::expectParameterError([&] { synthesizeParallel(analysis, {.coarsestFootprint = -1.0f}, 0, 0, 8, 8); },
+                             "coarsestFootprint");
+  test::expectParameterError([&] { synthesizeParallel(analysis, {.startPasses = -1}, 0, 0, 8, 8); }, "startPasses");
   std::vector<float> jitter(std::size_t(analysis.levelCount()), 0.4f);
   jitter[1] = std::nanf("");
   test::expectParameterError([&] { synthesizeParallel(analysis, {.jitter = jitter}, 0, 0, 8, 8); }, "jitter");
