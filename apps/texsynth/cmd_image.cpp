@@ -218,11 +218,13 @@ Command registerImageCommand(CLI::App& app, const GlobalOptions& globals) {
       "crisp, suits irregular and near-stochastic textures (marble, stone, bark).\n"
       "  tile-blend: histogram-preserving tiling and blending (Heitz & Neyret 2018); no visible deformation, keeps "
       "the exemplar's histogram, suits stochastic textures (granite, sand, noise-like surfaces).\n"
-      "  parallel: Lefebvre & Hoppe 2005 k-coherence synthesis on the cached exemplar analysis; copies exemplar "
-      "content pixel by pixel, so features stay crisp without visible tiling.\n"
-      "  optimize: texture optimization (Kwatra et al. 2005) with the discrete k-coherence solver of Han et al.: "
-      "slower, global (no --window), best at keeping larger structures intact; --solver least-squares runs "
-      "Kwatra's original blended solver for comparison (blurrier, slower).\n"
+      "  parallel: Lefebvre & Hoppe 2005 k-coherence synthesis on the cached exemplar analysis, from random "
+      "coordinates; copies exemplar content pixel by pixel: fast, crisp, complete, no lattice, but many small "
+      "seams.\n"
+      "  optimize: texture optimization (Kwatra et al. 2005) with the discrete k-coherence solver of Han et al., "
+      "started from the parallel result: slower, global (no --window), best at keeping larger structures intact "
+      "and every part of the exemplar; --solver least-squares runs Kwatra's original blended solver for comparison "
+      "(blurrier, slower).\n"
       "With --apply-coords COORDS.exr, EXEMPLAR is another map of the same material (normal, roughness ...) and the "
       "stored synthesis (from --coords) is re-applied to it.");
   auto args = std::make_shared<ImageArgs>();

@@ -1,11 +1,13 @@
 // The pixel-based methods of `texsynth image`: they synthesize source coordinates into the
 // exemplar (written with --coords, re-applied to other maps with --apply-coords).
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <sstream>
 
 #include "image_args.h"
 #include "texsynth/exemplar/analysis_cache.h"
+#include "texsynth/exemplar/gaussian_stack.h"
 #include "texsynth/image/parallel_synthesis.h"
 #include "texsynth/image/texture_optimization.h"
 #include "texsynth/io/image_io.h"
@@ -77,7 +79,10 @@ Image synthesizeOptimized(const Image& exemplar, const ImageArgs& args, int widt
   TextureOptimizationOptions options;
   options.seed = globals.seed;
   options.solver = parseOptimizationSolver(args.solver);
-  if (args.levels >= 0) options.levels = args.levels;
+  if (args.levels >= 0)
+    options.levels = args.levels;
+  else  // the default 3, or as many as a tiny exemplar has
+    options.levels = std::min(options.levels, defaultStackLevelCount(exemplar.width, exemplar.height));
   if (!args.neighborhoods.empty()) options.neighborhoodSizes = parseNeighborhoods(args.neighborhoods);
   if (args.iterations > 0) options.maxIterations = args.iterations;
   if (!args.jitter.empty()) options.jitter = parseFloatPair(args.jitter, "--jitter").second;

@@ -36,8 +36,7 @@ void sortUnique(std::vector<std::int32_t>& values) {
   values.erase(std::unique(values.begin(), values.end()), values.end());
 }
 
-// v mod n for v in (-n, 2n): one conditional step instead of a division (proposal offsets d h
-// stay below an exemplar side, see matchDiscrete's check).
+// v mod n for v in (-n, 2n): one conditional step instead of a division.
 int wrapOnce(int v, int n) {
   return v < 0 ? v + n : (v >= n ? v - n : v);
 }
@@ -67,7 +66,10 @@ std::int64_t matchDiscrete(const OptimizationGrid& grid, const ExemplarLevel& pc
                            const DiscreteStepOptions& step, Matches& matches) {
   const PcaBasis& pca = pcaLevel.pca;
   TS_CHECK(pca.inputDimension == grid.dimension());
-  TS_CHECK(grid.radius * grid.spacing() < std::min(grid.exemplarWidth, grid.exemplarHeight));
+  // Proposal offsets d h wrap by one conditional step, unless the neighborhood outreaches a tiny
+  // exemplar.
+  const bool wrapsOnce = grid.radius * grid.spacing() < std::min(grid.exemplarWidth, grid.exemplarHeight);
+  auto wrap = [wrapsOnce](int v, int n) { return wrapsOnce ? wrapOnce(v, n) : wrapIndex(v, n); };
   const int k = similarity.similarCount, dimensions = pca.outputDimension;
   std::vector<std::int64_t> changedPerRow(std::size_t(grid.activeHeight()), 0);
   parallelForChunks(0, grid.activeHeight(), kActiveRowChunk, [&](std::int64_t begin, std::int64_t end) {
@@ -90,7 +92,7 @@ std::int64_t matchDiscrete(const OptimizationGrid& grid, const ExemplarLevel& pc
           const std::int32_t* row = coords.at(0, wrapIndex(cy + dy, grid.height));
           for (int dx = -grid.radius; dx <= grid.radius; ++dx) {
             const std::int32_t* s = row + 2 * std::size_t(wrapIndex(cx + dx, grid.width));
-            const std::int32_t proposal = wrapOnce(s[1] - dy * h, eh) * ew + wrapOnce(s[0] - dx * h, ew);
+            const std::int32_t proposal = wrap(s[1] - dy * h, eh) * ew + wrap(s[0] - dx * h, ew);
             if (proposals.empty() || proposals.back() != proposal) proposals.push_back(proposal);
           }
         }
