@@ -13,8 +13,9 @@ PACKAGES=(
   libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev libglpk-dev libzfp-dev
   # real data: exemplars, meshes, malformed models; a peer synthesizer for comparisons
   gimp-data libcgal-demo assimp-testmodels gmic
-  # benchmarks: /usr/bin/time (bench/gradient_synthesis.sh)
-  time
+  # benchmarks: /usr/bin/time (bench/gradient_synthesis.sh), python3 (reads eval's JSON in
+  # bench/synthesis_comparison.sh)
+  time python3
 )
 PACKAGES+=("$@")
 

@@ -16,6 +16,11 @@
 // until no match changes. Multiresolution over the exemplar's Gaussian stack (3 levels as in
 // Han et al. Table 2), each level run with neighborhoods 17^2 then 9^2.
 //
+// The plain discrete energy leaves parts of the exemplar out (thin features lose the vote, a
+// flat region copied everywhere costs nothing), so by default the discrete solver also weighs
+// E-step votes by their match's quality, adds an exemplar-usage term and random candidates to
+// the M-step, and is best started from parallel synthesis (see the options and optimizeTexture).
+//
 // The output domain is a torus (no borders: every pixel sits in full neighborhoods), so an
 // output whose sides are multiples of 4 (the largest active-set stride) tiles seamlessly. It is a global
 // optimization: unlike the other 2D methods it is not random access. Deterministic for any
