@@ -122,6 +122,11 @@ void printJson(const nlohmann::json& document) {
   std::cout << document.dump(2) << std::endl;
 }
 
+nlohmann::json metricsJson(const QualityMetrics& m) {
+  return {{"coherence", m.coherence},     {"completeness", m.completeness}, {"histogram", m.histogram},
+          {"periodicity", m.periodicity}, {"lattice", m.lattice},           {"sharpness", m.sharpness}};
+}
+
 std::string defaultCacheDirectory() {
   namespace fs = std::filesystem;
   const auto variable = [](const char* name) -> std::string {

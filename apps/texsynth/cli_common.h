@@ -9,6 +9,7 @@
 
 #include "parameter_sources.h"
 #include "texsynth/core/progress.h"
+#include "texsynth/eval/metrics.h"
 
 namespace texsynth::cli {
 
@@ -68,6 +69,9 @@ void addTileBlendOptions(CLI::App& sub, float& tileSize, float& blendExponent);
 
 // Prints a JSON document on stdout (for --json).
 void printJson(const nlohmann::json& document);
+
+// The quality metrics of `texsynth eval` as JSON (without its timing), for eval's and the demo's reports.
+nlohmann::json metricsJson(const QualityMetrics& metrics);
 
 // The one cache directory (exemplar analyses, candidate triples): $TEXSYNTH_CACHE, else
 // $XDG_CACHE_HOME/texsynth, else $HOME/.cache/texsynth, else a per-user directory under the

@@ -80,13 +80,6 @@ Image stackPicture(const ExemplarAnalysis& analysis) {
   return out;
 }
 
-// A number for the report: three decimals are plenty for times and metrics.
-std::string fixed3(const json& value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3f", value.get<double>());
-  return text;
-}
-
 std::string markdownReport(const json& r) {
   std::ostringstream md;
   md << "# texsynth demo report\n\n";

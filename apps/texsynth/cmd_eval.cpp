@@ -15,9 +15,9 @@ namespace texsynth::cli {
 using nlohmann::json;
 
 static json toJson(const QualityMetrics& m) {
-  return {{"coherence", m.coherence},     {"completeness", m.completeness}, {"histogram", m.histogram},
-          {"periodicity", m.periodicity}, {"lattice", m.lattice},           {"sharpness", m.sharpness},
-          {"seconds", m.seconds}};
+  json metrics = metricsJson(m);
+  metrics["seconds"] = m.seconds;
+  return metrics;
 }
 
 // One row of the volume table; lattice comes after sharpness so that scripts reading the first

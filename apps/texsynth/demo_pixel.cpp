@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "cli_common.h"
 #include "texsynth/core/timing.h"
 #include "texsynth/exemplar/analysis_cache.h"
 #include "texsynth/image/parallel_synthesis.h"
@@ -20,17 +21,12 @@ namespace {
 
 constexpr int kSide = 256;
 
+}  // namespace
+
 std::string fixed3(double value) {
   char text[32];
   std::snprintf(text, sizeof text, "%.3f", value);
   return text;
-}
-
-}  // namespace
-
-json metricsJson(const QualityMetrics& m) {
-  return {{"coherence", m.coherence}, {"completeness", m.completeness}, {"histogram", m.histogram},
-          {"sharpness", m.sharpness}, {"lattice", m.lattice},           {"periodicity", m.periodicity}};
 }
 
 json demoPixelSynthesis(const Image& exemplar, const ExemplarAnalysis& analysis, std::uint64_t seed,

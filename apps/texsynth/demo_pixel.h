@@ -8,13 +8,12 @@
 #include <string>
 
 #include "texsynth/core/image.h"
-#include "texsynth/eval/metrics.h"
 #include "texsynth/exemplar/analysis.h"
 
 namespace texsynth::cli {
 
-// The report's row of metrics.
-nlohmann::json metricsJson(const QualityMetrics& metrics);
+// A number for the demo's report: three decimals are plenty for times and metrics.
+std::string fixed3(double value);
 
 // Writes pixel_synthesis.png (exemplar | parallel | optimize) through `out` and returns the
 // report's "pixel" section; `analysis` is the exemplar's default analysis (parallel's), the
