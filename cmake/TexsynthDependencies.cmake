@@ -11,6 +11,7 @@ find_package(nlohmann_json REQUIRED)
 find_package(TinyGLTF REQUIRED)
 find_package(OpenVDB REQUIRED)
 find_package(OpenMP REQUIRED)
+find_package(CGAL REQUIRED)  # isotropic remeshing of the surface-synthesis mesh hierarchy
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)
 if(TEXSYNTH_BUILD_TESTS OR TEXSYNTH_BUILD_BENCH)

@@ -5,7 +5,7 @@ set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 bash scripts/install-deps.sh
 cmake --preset debug -DTEXSYNTH_WERROR=ON -DTEXSYNTH_BUILD_BENCH=OFF >/dev/null
-suites=(core io field render gradient)
+suites=(core io geometry field render gradient surface)
 cmake --build build-debug -j "$(nproc)" --target "${suites[@]/#/test_}"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
 label_regex="^($(IFS='|'; echo "${suites[*]}"))\$"

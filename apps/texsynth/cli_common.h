@@ -112,5 +112,6 @@ Command registerSolidCommand(CLI::App& app, const GlobalOptions& globals);
 Command registerFieldCommand(CLI::App& app, const GlobalOptions& globals);
 Command registerVectorizeCommand(CLI::App& app, const GlobalOptions& globals);
 Command registerEditCommand(CLI::App& app, const GlobalOptions& globals);
+Command registerSurfaceCommand(CLI::App& app, const GlobalOptions& globals);
 
 }  // namespace texsynth::cli

@@ -13,6 +13,7 @@
 #include "demo_fallbacks.h"
 #include "demo_gradient.h"
 #include "demo_pixel.h"
+#include "demo_surface.h"
 #include "image_layout.h"
 #include "number_checks.h"
 #include "texsynth/core/atomic_file.h"
@@ -46,6 +47,9 @@ struct DemoArgs {
 
 const char* kDefaultPattern = "Stone/pink_marble.pat";
 const char* kDefaultMesh = "bunny00.off";
+// The surface section's exemplar: a woven fabric shows orientation and seams on the mesh at a
+// glance (the demo exemplar stands in where gimp-data is missing).
+const char* kSurfacePattern = "Fabric/burlap.pat";
 
 // The centre `size` x `size` crop (or the whole image if smaller), as RGB.
 Image centerCrop(const Image& image, int size) {
@@ -107,6 +111,7 @@ std::string markdownReport(const json& r) {
      << "texture synthesized from the exemplar by tiling and deformation (stacked along x, y and z, blended by the "
      << "normal), evaluated at every pixel: " << fixed3(r["mesh"]["solid_render_seconds"]) << " s.\n\n";
   md << pixelMarkdown(r["pixel"], r["tiling_baseline"]);
+  md << surfaceMarkdown(r["surface"]);
   md << gradientMarkdown(r["gradient"]);
   return md.str();
 }
@@ -208,6 +213,17 @@ void runDemo(const DemoArgs& args, const GlobalOptions& globals) {
   progress->advance(1);
   progress->end();
 
+  progress->begin("surface synthesis", 1);
+  {
+    const std::optional<std::string> fabric = gimpPattern(kSurfacePattern);
+    const Image surfaceExemplar = fabric ? readImage(*fabric).withChannels(3) : exemplar;
+    report["surface"] = demoSurfaceSynthesis(mesh, meshFallback ? "built-in sphere" : meshPath, surfaceExemplar,
+                                             fabric ? *fabric : (exemplarFallback ? "procedural marble" : exemplarPath),
+                                             globals.seed, cacheDir, out);
+  }
+  progress->advance(1);
+  progress->end();
+
   progress->begin("gradient solids", 1);
   report["gradient"] = demoGradientSolids(exemplar, globals.seed, cacheDir, out);
   progress->advance(1);
@@ -218,6 +234,7 @@ void runDemo(const DemoArgs& args, const GlobalOptions& globals) {
   if (globals.json) printJson(report);
   say(globals, "wrote " + out("report.md") +
                    " with exemplar.png, gaussian_stack.png, mesh.png, mesh_solid.png, pixel_synthesis.png, "
+                   "surface_synthesis.png, "
                    "gradient_magnified.png, "
                    "gradient_edit.png, gradient_synthesized.png and gradient_solid.tsgs");
 }
@@ -228,7 +245,8 @@ Command registerDemoCommand(CLI::App& app, const GlobalOptions& globals) {
   auto* sub =
       app.add_subcommand("demo",
                          "A tour on built-in defaults: analyse a real exemplar (GIMP's pink marble), render a real "
-                         "mesh (CGAL's bunny) plain and solid-textured, synthesize and score 2D textures, vectorize "
+                         "mesh (CGAL's bunny) plain and solid-textured, synthesize and score 2D textures, grow a "
+                         "texture on the mesh's surface, vectorize "
                          "and edit a small gradient solid, and write a "
                          "report with pictures into DIR");
   auto args = std::make_shared<DemoArgs>();

@@ -1,5 +1,6 @@
 // texsynth eval EXEMPLAR OUTPUT: coherence, completeness, histogram, periodicity, lattice and
-// sharpness of a result.
+// sharpness of a result; for a mesh with vertex colors, surface coherence (plain and
+// rotation-invariant) and histogram.
 #include <cstdio>
 
 #include "cli_common.h"
@@ -8,7 +9,10 @@
 #include "texsynth/eval/metrics.h"
 #include "texsynth/io/file_kind.h"
 #include "texsynth/io/image_io.h"
+#include "texsynth/io/mesh_io.h"
 #include "texsynth/io/volume_io.h"
+#include "texsynth/surface/surface_quality.h"
+#include "texsynth/surface/tangent_field.h"
 
 namespace texsynth::cli {
 
@@ -27,6 +31,24 @@ static void printRow(const char* label, const QualityMetrics& m) {
               m.histogram, m.periodicity, m.sharpness, m.lattice, m.seconds);
 }
 
+// The surface measure of a mesh with vertex colors, oriented as surface synthesis orients its
+// texture by default: the smooth field following world +Y is the exemplar's up direction b, and
+// the patches' x axis is t = b x n.
+static SurfaceQuality evaluateMesh(const Image& exemplar, const std::string& path,
+                                   const SurfaceQualityOptions& options) {
+  Mesh mesh = readMesh(path);
+  if (mesh.colors.empty())
+    throw InputError(path, "has no vertex colors: eval measures a mesh by the texture in its vertex colors");
+  try {
+    std::vector<Vec3f> tangents = smoothTangentField(mesh);
+    for (std::size_t v = 0; v < tangents.size(); ++v) tangents[v] = tangents[v].cross(mesh.normals[v]).normalized();
+    return evaluateSurface(exemplar, mesh, tangents, options);
+  } catch (const InputError& e) {
+    if (e.file() == "mesh") throw InputError(path, e.problem());  // the library's name for it
+    throw;
+  }
+}
+
 Command registerEvalCommand(CLI::App& app, const GlobalOptions& globals) {
   auto* sub = app.add_subcommand("eval",
                                  "Measure a synthesized image or volume against its exemplar.\n"
@@ -38,15 +60,23 @@ Command registerEvalCommand(CLI::App& app, const GlobalOptions& globals) {
                                  "of the luminance detail away from the origin (a shifted repeat of the same content, "
                                  "as in a tiling or a grid of copies, scores high; noise and good synthesis near 0); "
                                  "sharpness: mean gradient magnitude over the exemplar's (1 = as crisp, lower = "
-                                 "blurrier). Colors on 0..255.");
+                                 "blurrier). Colors on 0..255.\n"
+                                 "A mesh with vertex colors (a retiled one, as texsynth surface writes, one vertex per "
+                                 "texture pixel) gets the surface measures: coherence of the patches resampled around "
+                                 "sampled vertices along the default surface orientation (exemplar up = world +Y), "
+                                 "rotation-invariant coherence (each patch at the best of its 8 rotations and mirrors: "
+                                 "for textures whose orientation on the surface is unknown, such as solids), and the "
+                                 "histogram distance of the vertex colors.");
   struct Args {
     std::string exemplar, output;
     MetricOptions options;
+    SurfaceQualityOptions surface;
   };
   auto args = std::make_shared<Args>();
   inputFiles(sub->add_option("EXEMPLAR", args->exemplar, "The exemplar image"))->required();
-  inputFiles(
-      sub->add_option("OUTPUT", args->output, "A synthesized image, or a volume (" + readableVolumeExtensions() + ")"))
+  inputFiles(sub->add_option("OUTPUT", args->output,
+                             "A synthesized image, a volume (" + readableVolumeExtensions() +
+                                 "), or a mesh with vertex colors (" + readableMeshExtensions() + ")"))
       ->required();
   sub->add_option("--patch", args->options.patchSize, "Patch size (odd) for coherence, completeness and periodicity")
       ->capture_default_str()
@@ -57,20 +87,52 @@ Command registerEvalCommand(CLI::App& app, const GlobalOptions& globals) {
   sub->add_option("--slices", args->options.slicesPerAxis, "Volumes: slices evaluated per axis")
       ->capture_default_str()
       ->check(integerIn(1, 4096));
-  const ParameterSources sources = {
-      {"patchSize", fromFlag("--patch")},           {"periodicitySamples", fromFlag("--periodicity-samples")},
-      {"slicesPerAxis", fromFlag("--slices")},      {"exemplar", fromFile(args->exemplar)},
-      {"output", fromFile(args->output)},           {"volume", fromFile(args->output)},
-      {"histogramDistance", fromFile(args->output)}};
+  sub->add_option("--samples", args->surface.samples, "Meshes: vertices evaluated (0 = all)")
+      ->capture_default_str()
+      ->check(integerIn(0, 100000000));
+  const ParameterSources sources = {{"patchSize", fromFlag("--patch")},
+                                    {"periodicitySamples", fromFlag("--periodicity-samples")},
+                                    {"slicesPerAxis", fromFlag("--slices")},
+                                    {"exemplar", fromFile(args->exemplar)},
+                                    {"output", fromFile(args->output)},
+                                    {"volume", fromFile(args->output)},
+                                    {"histogramDistance", fromFile(args->output)},
+                                    {"samples", fromFlag("--samples")}};
 
   return {sub,
           [sub, args, &globals] {
-            const bool volume = fileKind(args->output) == FileKind::Volume;
-            rejectFlagsOutsideMode(*sub, {{"--slices", {"volume OUTPUTs"}}}, volume ? "volume OUTPUTs" : "",
-                                   "when OUTPUT is an image");
+            const FileKind kind = fileKind(args->output);
+            const bool volume = kind == FileKind::Volume, mesh = kind == FileKind::Mesh;
+            const char* mode = volume ? "volume OUTPUTs" : mesh ? "mesh OUTPUTs" : "image OUTPUTs";
+            const char* phrase = volume ? "when OUTPUT is a volume"
+                                 : mesh ? "when OUTPUT is a mesh"
+                                        : "when OUTPUT is an image";
+            rejectFlagsOutsideMode(*sub,
+                                   {{"--slices", {"volume OUTPUTs"}},
+                                    {"--samples", {"mesh OUTPUTs"}},
+                                    {"--periodicity-samples", {"image OUTPUTs", "volume OUTPUTs"}}},
+                                   mode, phrase);
             args->options.seed = globals.seed;
             Image exemplar = readImage(args->exemplar);
             json report = {{"exemplar", args->exemplar}, {"output", args->output}, {"patch", args->options.patchSize}};
+            if (mesh) {
+              args->surface.patchSize = args->options.patchSize;
+              args->surface.seed = globals.seed;
+              const SurfaceQuality q = evaluateMesh(exemplar, args->output, args->surface);
+              report["surface"] = {{"coherence", q.coherence},    {"rotation_invariant", q.rotationInvariant},
+                                   {"histogram", q.histogram},    {"evaluated", q.evaluated},
+                                   {"near_border", q.nearBorder}, {"spacing", q.spacing},
+                                   {"seconds", q.seconds}};
+              if (globals.json) return printJson(report);
+              std::printf("coherence           %8.3f   (lower is better)\n", q.coherence);
+              std::printf("rotation-invariant  %8.3f   (lower is better; each patch at its best rotation or mirror)\n",
+                          q.rotationInvariant);
+              std::printf("histogram           %8.3f   (lower is better)\n", q.histogram);
+              std::printf("vertices            %8d   evaluated (%d near a border left out)\n", q.evaluated,
+                          q.nearBorder);
+              std::printf("time                %8.2fs\n", q.seconds);
+              return;
+            }
             if (volume) {
               VolumeQuality q = evaluateVolume(exemplar, readVolume(args->output), args->options);
               report["x"] = toJson(q.axis[0]);

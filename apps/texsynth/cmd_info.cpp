@@ -44,13 +44,17 @@ static json describeImage(const std::string& path) {
 static json describeMesh(const std::string& path) {
   Mesh mesh = readMesh(path);
   Box3f box = mesh.bounds();
+  json attributes = json::array();  // "uv" says whether `surface --bake` can use the mesh
+  for (const auto& entry : mesh.attributes) attributes.push_back(entry.first);
   return {{"kind", "mesh"},
           {"vertices", mesh.vertexCount()},
           {"triangles", mesh.triangleCount()},
           {"bounds_min", {box.min.x(), box.min.y(), box.min.z()}},
           {"bounds_max", {box.max.x(), box.max.y(), box.max.z()}},
           {"surface_area", mesh.surfaceArea()},
-          {"has_colors", !mesh.colors.empty()}};
+          {"has_colors", !mesh.colors.empty()},
+          {"has_uvs", mesh.attributes.count(kUvAttribute) > 0},
+          {"vertex_attributes", attributes}};
 }
 
 static json describeVolume(const std::string& path) {

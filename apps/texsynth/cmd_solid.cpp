@@ -11,7 +11,8 @@
 #include "solid_args.h"
 #include "texsynth/core/atomic_file.h"
 #include "texsynth/core/memory_budget.h"
-#include "texsynth/field/mesh_cut.h"
+#include "texsynth/geometry/mesh_cut.h"
+#include "texsynth/geometry/surface_voxels.h"
 #include "texsynth/gradient/gradient_solid_file.h"
 #include "texsynth/gradient/gradient_solid_texture.h"
 #include "texsynth/io/file_kind.h"
@@ -21,7 +22,6 @@
 #include "texsynth/render/glyph_mesh.h"
 #include "texsynth/render/render_mesh.h"
 #include "texsynth/solid/solid_consumers.h"
-#include "texsynth/solid/surface_voxels.h"
 #include "texsynth/solid/tile_blend_solid.h"
 #include "texsynth/solid/tile_deform_solid.h"
 

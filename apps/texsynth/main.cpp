@@ -28,7 +28,7 @@ int main(int argc, char** argv) {
       cli::registerRenderCommand(app, globals), cli::registerInfoCommand(app, globals),
       cli::registerImageCommand(app, globals),  cli::registerSolidCommand(app, globals),
       cli::registerFieldCommand(app, globals),  cli::registerVectorizeCommand(app, globals),
-      cli::registerEditCommand(app, globals),
+      cli::registerEditCommand(app, globals),   cli::registerSurfaceCommand(app, globals),
   };
   // Global flags may also follow the subcommand name.
   for (auto& command : commands) {

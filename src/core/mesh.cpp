@@ -41,6 +41,10 @@ void Mesh::validate(const std::string& source) const {
     throw InputError(source, "normal count differs from vertex count");
   if (!colors.empty() && colors.size() != positions.size())
     throw InputError(source, "color count differs from vertex count");
+  for (const auto& [name, attribute] : attributes)
+    if (attribute.components < 1 || attribute.values.size() != positions.size() * std::size_t(attribute.components))
+      throw InputError(source, "vertex attribute '" + name + "' has " + std::to_string(attribute.values.size()) +
+                                   " values for " + std::to_string(positions.size()) + " vertices");
 }
 
 double Mesh::surfaceArea() const {

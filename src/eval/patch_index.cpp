@@ -1,6 +1,7 @@
 #include "texsynth/eval/patch_index.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <optional>
 #include <string>
@@ -18,6 +19,8 @@ namespace {
 // Patch rows per parallel work item. Fixed, so the work split (and with it every guess and
 // rotation) is the same for any thread count.
 constexpr int kRowsPerBlock = 4;
+// Query vectors per parallel work item of nearestVectors.
+constexpr std::size_t kVectorsPerBlock = 64;
 }  // namespace
 
 struct PatchIndex::Impl {
@@ -26,9 +29,10 @@ struct PatchIndex::Impl {
   PatchBasis basis;
   std::optional<PatchKdTree> tree;
 
-  // The nearest patch to `query`, starting from the match `guess` (or none, -1).
-  PatchKdTree::Best search(const float* query, int guess) const {
-    PatchKdTree::Best best{std::numeric_limits<float>::infinity(), -1};
+  // The nearest patch to `query`, starting from the match `guess` (or none, -1), among those
+  // closer than `bound` (a float distance in rotated coordinates).
+  PatchKdTree::Best search(const float* query, int guess, float bound = std::numeric_limits<float>::infinity()) const {
+    PatchKdTree::Best best{bound, -1};
     if (guess >= 0) best = {tree->distanceTo(query, guess), guess};
     tree->nearest(query, best);
     return best;
@@ -122,6 +126,55 @@ std::vector<PatchMatch> PatchIndex::nearest(const Image& queries) const {
         const int bx = best.index % d.columns, by = best.index / d.columns;
         matches[at] = {best.index, meanSquaredDifference(queries, x, first + r, d.image, bx, by, size)};
       }
+  });
+  return matches;
+}
+
+std::vector<PatchMatch> PatchIndex::nearestVectors(std::span<const float> queries, std::size_t count,
+                                                   std::span<const double> limits) const {
+  const Impl& d = *impl_;
+  const int size = patchSize(), dims = d.basis.dimensions, stride = d.basis.stride;
+  if (queries.size() != count * std::size_t(dims))
+    throw ParameterError("queries", "holds " + std::to_string(queries.size()) + " values, not " +
+                                        std::to_string(count) + " vectors of " + std::to_string(dims));
+  for (float value : queries)
+    if (!std::isfinite(value)) throw ParameterError("queries", "contains non-finite values (NaN or infinity)");
+  if (!limits.empty() && limits.size() != count)
+    throw ParameterError("limits",
+                         "has " + std::to_string(limits.size()) + " entries for " + std::to_string(count) + " queries");
+  for (double limit : limits)
+    if (!(limit >= 0)) throw ParameterError("limits", "must be >= 0 (or infinity), got " + std::to_string(limit));
+  const std::size_t rowValues = std::size_t(size) * d.image.channels;
+  std::vector<PatchMatch> matches(count);
+  const std::size_t blocks = (count + kVectorsPerBlock - 1) / kVectorsPerBlock;
+  parallelFor(0, std::int64_t(blocks), [&](std::int64_t block) {
+    const std::size_t first = std::size_t(block) * kVectorsPerBlock;
+    const std::size_t n = std::min(kVectorsPerBlock, count - first);
+    const float* values = queries.data() + first * dims;
+    std::vector<float> vectors(n * stride);
+    eval_detail::rotateVectors(values, n, d.basis, vectors.data());
+    for (std::size_t i = 0; i < n; ++i) {
+      float bound = std::numeric_limits<float>::infinity();
+      if (!limits.empty() && limits[first + i] < std::numeric_limits<float>::max() / (2.0 * dims))
+        bound = PatchKdTree::slackened(float(limits[first + i] * dims));
+      PatchKdTree::Best best = d.search(&vectors[i * stride], -1, bound);
+      if (best.index < 0) {
+        matches[first + i] = {-1, std::numeric_limits<double>::infinity()};
+        continue;
+      }
+      const int bx = best.index % d.columns, by = best.index / d.columns;
+      // The distance in double, from the raw query values and the indexed pixels.
+      const float* query = values + i * dims;
+      double sum = 0;
+      for (int dy = 0; dy < size; ++dy) {
+        const float* pixels = d.image.pixel(bx, by + dy);
+        for (std::size_t k = 0; k < rowValues; ++k) {
+          const double diff = double(query[dy * rowValues + k]) - double(pixels[k]);
+          sum += diff * diff;
+        }
+      }
+      matches[first + i] = {best.index, sum / double(dims)};
+    }
   });
   return matches;
 }

@@ -14,11 +14,11 @@ namespace {
 // when the bound is clearly past the limit so no true candidate is ever skipped.
 constexpr float kPruneSlack = 1e-4f;
 constexpr float kPruneFloor = 1e-3f;
+}  // namespace
 
-float slackened(float limit) {
+float PatchKdTree::slackened(float limit) {
   return limit * (1 + kPruneSlack) + kPruneFloor;
 }
-}  // namespace
 
 struct PatchKdTree::Search {
   const float* query;
@@ -119,7 +119,7 @@ bool PatchKdTree::leafDistances(int leaf, const float* query, float limit, float
 }
 
 void PatchKdTree::nearest(const float* query, Best& best) const {
-  Search search{query, best.index < 0 ? std::numeric_limits<float>::infinity() : best.distance, best.index, nullptr};
+  Search search{query, best.distance, best.index, nullptr};
   searchNearest(0, search, 0.0f);
   best = {search.limit, search.bestIndex};
 }

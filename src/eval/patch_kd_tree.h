@@ -29,8 +29,13 @@ class PatchKdTree {
   // Squared float distance from `query` to patch `index`.
   float distanceTo(const float* query, int index) const;
   // Improves `best` to the nearest patch; ties go to the lowest patch index. `best` may be
-  // seeded with any guess (its distance from distanceTo) to tighten pruning from the start.
+  // seeded with any guess (its distance from distanceTo) to tighten pruning from the start, or
+  // with index -1 and a finite distance: then only patches closer than that are looked for
+  // (index stays -1 when there is none).
   void nearest(const float* query, Best& best) const;
+  // `limit` with the slack pruning keeps: a seed distance under which every patch whose exact
+  // distance is at most `limit` is still found despite float rounding.
+  static float slackened(float limit);
   // Appends (unordered) every patch index whose float distance is at most `radius`.
   void within(const float* query, float radius, std::vector<int>& out) const;
 

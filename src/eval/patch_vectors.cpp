@@ -74,4 +74,13 @@ void rotatePatch(const Image& image, const PatchBasis& basis, int x, int y, floa
   result.noalias() = Eigen::Map<const Eigen::RowVectorXf>(centred.data(), basis.dimensions) * rotation;
 }
 
+void rotateVectors(const float* values, std::size_t count, const PatchBasis& basis, float* out) {
+  RowMajorF centred = Eigen::Map<const RowMajorF>(values, Eigen::Index(count), basis.dimensions);
+  for (Eigen::Index i = 0; i < centred.rows(); ++i)
+    for (int k = 0; k < basis.dimensions; ++k) centred(i, k) -= basis.mean[k];
+  Eigen::Map<const RowMajorF> rotation(basis.rotation.data(), basis.dimensions, basis.stride);
+  Eigen::Map<RowMajorF> result(out, Eigen::Index(count), basis.stride);
+  result.noalias() = centred * rotation;
+}
+
 }  // namespace texsynth::eval_detail

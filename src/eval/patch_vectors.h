@@ -30,4 +30,8 @@ void rotatePatchRows(const Image& image, const PatchBasis& basis, int firstRow, 
 // Rotated vector of the single patch at top-left (x, y); writes stride floats to `out`.
 void rotatePatch(const Image& image, const PatchBasis& basis, int x, int y, float* out);
 
+// Rotated vectors of `count` patches given as raw values (dimensions floats each, in the patch
+// vector layout above); writes count * stride floats to `out`.
+void rotateVectors(const float* values, std::size_t count, const PatchBasis& basis, float* out);
+
 }  // namespace texsynth::eval_detail

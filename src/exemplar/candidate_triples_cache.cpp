@@ -6,9 +6,9 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "byte_stream.h"
-#include "cache_file.h"
 #include "texsynth/core/atomic_file.h"
+#include "texsynth/core/byte_stream.h"
+#include "texsynth/core/cache_file.h"
 #include "texsynth/core/error.h"
 #include "texsynth/core/hash.h"
 #include "texsynth/exemplar/candidate_triples.h"

@@ -5,7 +5,7 @@
 #include <tuple>
 
 #include "texsynth/core/error.h"
-#include "texsynth/field/mesh_cut.h"
+#include "texsynth/geometry/mesh_cut.h"
 #include "texsynth/render/glyph_mesh.h"
 
 namespace texsynth {

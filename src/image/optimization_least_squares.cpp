@@ -1,4 +1,5 @@
-// The least-squares E-step and KD-tree M-step of texture optimization (Kwatra et al. 2005).
+// The least-squares E-step and KD-tree M-step of texture optimization (Kwatra et al. 2005), and
+// the colors of a map of sources.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -11,28 +12,27 @@ namespace texsynth::detail {
 
 std::int64_t matchLeastSquares(const OptimizationGrid& grid, const PcaBasis& pca,
                                const ProjectedNeighborhoodIndex& index, const Image& colors, Matches& matches) {
-  TS_CHECK(pca.inputDimension == grid.dimension());
-  std::vector<std::int64_t> changedPerRow(std::size_t(grid.activeHeight()), 0);
-  parallelForChunks(0, grid.activeHeight(), 2, [&](std::int64_t begin, std::int64_t end) {
-    std::vector<float> query(static_cast<std::size_t>(grid.dimension()));
+  const ExemplarWindow& window = grid.window;
+  TS_CHECK(pca.inputDimension == window.dimension());
+  std::vector<std::uint8_t> changed(matches.pixel.size(), 0);
+  parallelForChunks(0, grid.activeCount(), grid.activeChunk(), [&](std::int64_t begin, std::int64_t end) {
+    std::vector<float> query(static_cast<std::size_t>(window.dimension()));
     std::vector<float> projected(static_cast<std::size_t>(pca.outputDimension));
-    std::vector<int> columns(std::size_t(grid.size));
-    auto colorAt = [&](int x, int y) { return colors.pixel(x, y); };
-    for (int ay = int(begin); ay < int(end); ++ay)
-      for (int ax = 0; ax < grid.activeWidth(); ++ax) {
-        grid.gatherOutput(ax * grid.stride, ay * grid.stride, colorAt, query.data());
-        pca.project(query.data(), projected.data());
-        const std::int32_t found = index.nearest(projected.data());
-        const std::int64_t a = std::int64_t(ay) * grid.activeWidth() + ax;
-        if (found != matches.pixel[a]) ++changedPerRow[ay];
-        matches.pixel[a] = found;
-        matches.distance[a] =
-            grid.distance(query.data(), found, std::numeric_limits<float>::infinity(), columns.data());
-      }
+    std::vector<int> columns(std::size_t(window.size));
+    auto colorOf = [&](std::int64_t sample) { return colors.pixels.data() + std::size_t(sample) * colors.channels; };
+    for (std::int64_t a = begin; a < end; ++a) {
+      grid.gather(a, colorOf, query.data());
+      pca.project(query.data(), projected.data());
+      const std::int32_t found = index.nearest(projected.data());
+      changed[std::size_t(a)] = found != matches.pixel[std::size_t(a)];
+      matches.pixel[std::size_t(a)] = found;
+      matches.distance[std::size_t(a)] =
+          window.distance(query.data(), found, std::numeric_limits<float>::infinity(), columns.data());
+    }
   });
-  std::int64_t changed = 0;
-  for (std::int64_t c : changedPerRow) changed += c;
-  return changed;
+  std::int64_t total = 0;
+  for (std::uint8_t c : changed) total += c;
+  return total;
 }
 
 Image updateLeastSquares(const OptimizationGrid& grid, const Matches& matches, float robustExponent) {
@@ -43,22 +43,35 @@ Image updateLeastSquares(const OptimizationGrid& grid, const Matches& matches, f
   std::vector<float> weights(matches.distance.size());
   for (std::size_t a = 0; a < weights.size(); ++a)
     weights[a] = std::pow(std::max(matches.distance[a], kDistanceFloor), power);
-  const int channels = grid.channels();
+  const ExemplarWindow& window = grid.window;
+  const int channels = window.channels();
   Image out(grid.width, grid.height, channels);
-  parallelForChunks(0, grid.height, 8, [&](std::int64_t begin, std::int64_t end) {
+  parallelForChunks(0, grid.sampleCount(), grid.sampleChunk(), [&](std::int64_t begin, std::int64_t end) {
     std::vector<double> sum(static_cast<std::size_t>(channels));
-    for (int y = int(begin); y < int(end); ++y)
-      for (int x = 0; x < grid.width; ++x) {
-        std::fill(sum.begin(), sum.end(), 0.0);
-        double total = 0;
-        grid.forEachCovering(x, y, [&](std::int64_t a, int dx, int dy) {
-          const float* color = grid.exemplarColor(grid.shifted(matches.pixel[a], dx, dy));
-          for (int c = 0; c < channels; ++c) sum[c] += double(weights[a]) * color[c];
-          total += weights[a];
-        });
-        float* target = out.pixel(x, y);
-        for (int c = 0; c < channels; ++c) target[c] = float(sum[c] / total);
-      }
+    for (std::int64_t sample = begin; sample < end; ++sample) {
+      std::fill(sum.begin(), sum.end(), 0.0);
+      double total = 0;
+      grid.forEachCovering(sample, [&](std::int64_t a, int dx, int dy) {
+        const float* color = window.exemplarColor(window.shifted(matches.pixel[std::size_t(a)], dx, dy));
+        for (int c = 0; c < channels; ++c) sum[c] += double(weights[std::size_t(a)]) * color[c];
+        total += weights[std::size_t(a)];
+      });
+      float* target = out.pixels.data() + std::size_t(sample) * channels;
+      for (int c = 0; c < channels; ++c) target[c] = float(sum[c] / total);
+    }
+  });
+  return out;
+}
+
+Image colorsAt(const OptimizationGrid& grid, std::span<const std::int32_t> sources) {
+  const ExemplarWindow& window = grid.window;
+  const int channels = window.channels();
+  Image out(grid.width, grid.height, channels);
+  parallelForChunks(0, grid.sampleCount(), grid.sampleChunk(), [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t sample = begin; sample < end; ++sample) {
+      const float* color = window.exemplarColor(sources[std::size_t(sample)]);
+      std::copy(color, color + channels, out.pixels.data() + std::size_t(sample) * channels);
+    }
   });
   return out;
 }

@@ -3,9 +3,7 @@
 #include "texsynth/image/texture_optimization.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
-#include <optional>
 
 #include "optimization_steps.h"
 #include "texsynth/core/parallel.h"
@@ -16,7 +14,6 @@ namespace {
 
 using detail::Matches;
 using detail::OptimizationGrid;
-using Clock = std::chrono::steady_clock;
 
 bool isLeastSquares(const TextureOptimizationOptions& options) {
   return options.solver == OptimizationSolver::LeastSquares;
@@ -114,6 +111,20 @@ Image upsampleColors(const Image& coarse, int width, int height) {
   return fine;
 }
 
+// Source coordinates as exemplar pixel indices (the discrete steps' sources), and back.
+std::vector<std::int32_t> toSources(const SourceCoordinates& coords, int exemplarWidth) {
+  std::vector<std::int32_t> sources(coords.xy.size() / 2);
+  for (std::size_t i = 0; i < sources.size(); ++i) sources[i] = coords.xy[2 * i + 1] * exemplarWidth + coords.xy[2 * i];
+  return sources;
+}
+
+void assignSources(std::span<const std::int32_t> sources, int exemplarWidth, SourceCoordinates& coords) {
+  for (std::size_t i = 0; i < sources.size(); ++i) {
+    coords.xy[2 * i] = sources[i] % exemplarWidth;
+    coords.xy[2 * i + 1] = sources[i] / exemplarWidth;
+  }
+}
+
 // The state one level carries between neighborhood sizes and iterations.
 struct LevelState {
   SourceCoordinates coords;  // discrete
@@ -124,50 +135,31 @@ struct LevelState {
 void optimizeScale(std::span<const ExemplarAnalysis> analyses, const TextureOptimizationOptions& options, int level,
                    std::size_t scale, LevelState& state, std::vector<OptimizationIteration>& history,
                    Progress& progress) {
-  const bool leastSquares = isLeastSquares(options);
   const ExemplarAnalysis& analysis = analyses[scale];
-  const int width = leastSquares ? state.colors.width : state.coords.width;
-  const int height = leastSquares ? state.colors.height : state.coords.height;
-  const OptimizationGrid grid(analysis, level, width, height, options.neighborhoodSizes[scale],
-                              leastSquares ? detail::PixelNorm::Squared : detail::PixelNorm::Euclidean);
-  std::optional<ProjectedNeighborhoodIndex> index;
-  if (leastSquares) {  // exact search, a fair baseline; over the allowed match centres only
-    std::vector<std::int32_t> allowed;
-    for (std::int32_t pixel = 0; pixel < analysis.width * analysis.height; ++pixel)
-      if (grid.isAllowedCentre(pixel)) allowed.push_back(pixel);
-    index.emplace(analysis.levels[level].projectedVectors(), std::move(allowed));
+  const int size = options.neighborhoodSizes[scale];
+  if (!isLeastSquares(options)) {
+    const OptimizationGrid grid(analysis, level, state.coords.width, state.coords.height, size);
+    std::vector<std::int32_t> sources = toSources(state.coords, analysis.width);
+    detail::optimizeDiscreteScale(grid, analyses, level, scale, options, sources, history, progress);
+    assignSources(sources, analysis.width, state.coords);
+    return;
   }
-
+  const OptimizationGrid grid(analysis, level, state.colors.width, state.colors.height, size);
+  // Exact search, a fair baseline; over the allowed match centres only.
+  std::vector<std::int32_t> allowed;
+  for (std::int32_t pixel = 0; pixel < analysis.width * analysis.height; ++pixel)
+    if (grid.window.isAllowedCentre(pixel)) allowed.push_back(pixel);
+  const ProjectedNeighborhoodIndex index(analysis.levels[level].projectedVectors(), std::move(allowed));
   Matches matches(grid.activeCount());
-  int matchCount = 0;
   auto match = [&] {
-    if (leastSquares) return detail::matchLeastSquares(grid, analysis.levels[level].pca, *index, state.colors, matches);
-    const detail::UsageMap usage(grid, state.coords, options.coverageWeight);
-    const detail::DiscreteStepOptions step{
-        usage.active() ? &usage : nullptr, options.randomCandidates,
-        hashKey(options.seed, std::uint64_t(level), std::uint64_t(scale), std::uint64_t(matchCount++))};
-    return detail::matchDiscrete(grid, analysis.levels[level], analyses.back(), level, state.coords, step, matches);
+    return detail::matchLeastSquares(grid, analysis.levels[level].pca, index, state.colors, matches);
   };
-  auto record = [&](int iteration, std::int64_t changed, Clock::time_point start) {
-    history.push_back({level, grid.size, iteration, detail::normalizedEnergy(grid, matches), changed,
-                       grid.activeCount(), std::chrono::duration<double>(Clock::now() - start).count()});
+  auto update = [&] { state.colors = detail::updateLeastSquares(grid, matches, options.robustExponent); };
+  auto record = [&](int iteration, std::int64_t changed, double seconds) {
+    history.push_back(
+        {level, size, iteration, detail::normalizedEnergy(matches, size), changed, grid.activeCount(), seconds});
   };
-  Clock::time_point start = Clock::now();
-  record(0, match(), start);
-  progress.advance(1);
-  int iteration = 1;
-  for (; iteration <= options.maxIterations; ++iteration) {
-    start = Clock::now();
-    if (leastSquares)
-      state.colors = detail::updateLeastSquares(grid, matches, options.robustExponent);
-    else
-      state.coords = detail::updateDiscrete(grid, analyses.back(), level, state.coords, options.voteExponent, matches);
-    const std::int64_t changed = match();
-    record(iteration, changed, start);
-    progress.advance(1);
-    if (changed == 0) break;
-  }
-  if (iteration < options.maxIterations) progress.advance(options.maxIterations - iteration);
+  detail::iterateExpectationMaximization(options.maxIterations, match, update, record, progress);
 }
 
 SourceCoordinates cropCoordinates(const SourceCoordinates& coords, int width, int height) {
@@ -223,7 +215,7 @@ TextureOptimizationResult optimizeTexture(std::span<const ExemplarAnalysis> anal
   // rounded up to a stride. The finest is the output itself when its sides are multiples of
   // the largest stride (then it tiles seamlessly).
   int maxStride = 1;
-  for (int n : options.neighborhoodSizes) maxStride = std::max(maxStride, OptimizationGrid::activeStride(n));
+  for (int n : options.neighborhoodSizes) maxStride = std::max(maxStride, detail::activeStride(n));
   const auto levelSlots = static_cast<std::size_t>(levels);
   std::vector<int> widths(levelSlots), heights(levelSlots);
   widths.back() = roundUp(width, maxStride), heights.back() = roundUp(height, maxStride);
@@ -240,25 +232,26 @@ TextureOptimizationResult optimizeTexture(std::span<const ExemplarAnalysis> anal
   // optimization settles on that lattice (GIMP leaves, 50^2, at 256^2: lattice 0.5).
   int first = 0;
   const int largest = *std::max_element(options.neighborhoodSizes.begin(), options.neighborhoodSizes.end());
-  while (first + 1 < levels && !OptimizationGrid(base, first, widths[first], heights[first], largest).bounded) ++first;
+  while (first + 1 < levels && !detail::ExemplarWindow(base, first, largest).bounded) ++first;
   for (int level = first; level < levels; ++level) {
     const int w = widths[level], h = heights[level];
     progress.begin("optimize level " + std::to_string(level + 1) + "/" + std::to_string(levels) + " (" +
                        std::to_string(w) + "x" + std::to_string(h) + ")",
                    steps);
     const OptimizationGrid start(base, level, w, h, options.neighborhoodSizes[0]);
+    const int spacing = start.window.spacing();
     const SourceCoordinates* given = startCoords;
     if (level == first && given)
       state.coords = sampledCoordinates(*given, w, h, 1 << (levels - 1 - level));
     else if (level == first)
-      state.coords = startCoordinates(options, w, h, start.spacing(), base.width, base.height);
+      state.coords = startCoordinates(options, w, h, spacing, base.width, base.height);
     else if (!isLeastSquares(options))
-      state.coords =
-          upsampleCoordinates(state.coords, SourceCoordinates(0, 0, w, h), start.spacing(), base.width, base.height);
+      state.coords = upsampleCoordinates(state.coords, SourceCoordinates(0, 0, w, h), spacing, base.width, base.height);
     if (level > first && !isLeastSquares(options))
-      jitterCoordinates(state.coords, level, start.spacing(), options.jitter, options.seed, base.width, base.height);
+      jitterCoordinates(state.coords, level, spacing, options.jitter, options.seed, base.width, base.height);
     if (isLeastSquares(options))
-      state.colors = level == first ? detail::colorsAt(start, state.coords) : upsampleColors(state.colors, w, h);
+      state.colors = level == first ? detail::colorsAt(start, toSources(state.coords, base.width))
+                                    : upsampleColors(state.colors, w, h);
     for (std::size_t scale = 0; scale < options.neighborhoodSizes.size(); ++scale)
       optimizeScale(analyses, options, level, scale, state, result.history, progress);
     progress.end();
@@ -270,7 +263,7 @@ TextureOptimizationResult optimizeTexture(std::span<const ExemplarAnalysis> anal
     colors = std::move(state.colors);
   } else {
     result.coords = cropCoordinates(state.coords, width, height);
-    colors = detail::colorsAt(finest, result.coords);
+    colors = detail::colorsAt(finest, toSources(state.coords, base.width));
   }
   result.colors = colors.crop(0, 0, width, height).withChannels(base.colorChannels);
   return result;

@@ -9,7 +9,7 @@
 namespace texsynth {
 
 static constexpr std::array<std::string_view, 7> kImage = {"png", "jpg", "jpeg", "bmp", "tga", "exr", "pat"};
-static constexpr std::array<std::string_view, 4> kMesh = {"obj", "ply", "off", "stl"};
+static constexpr std::array<std::string_view, 6> kMesh = {"obj", "ply", "off", "stl", "glb", "gltf"};
 static constexpr std::array<std::string_view, 2> kVolume = {"nrrd", "vdb"};
 static constexpr std::array<std::string_view, 1> kField = {"tsfield"};
 static constexpr std::array<std::string_view, 1> kGradientSolid = {"tsgs"};

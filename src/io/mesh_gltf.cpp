@@ -1,4 +1,5 @@
-// glTF 2.0 writer through tinygltf: one buffer holding POSITION, NORMAL, COLOR_0 (float vec3)
+// glTF 2.0 writer through tinygltf: one buffer holding POSITION, NORMAL, COLOR_0 (float vec3),
+// TEXCOORD_0 (float vec2, from the "uv" attribute with v flipped: glTF's origin is the top left)
 // and uint32 indices, one triangle primitive, and a material whose white base color lets the
 // vertex colors show unchanged (non-metallic, fully rough, so viewers do not darken it).
 #include <tiny_gltf.h>
@@ -45,6 +46,20 @@ int addVec3Attribute(tinygltf::Model& model, const std::vector<Vec3f>& values, b
   return int(model.accessors.size()) - 1;
 }
 
+// TEXCOORD_0 from OBJ/PLY-style coordinates (v up); returns the accessor index.
+int addTexcoordAttribute(tinygltf::Model& model, const std::vector<float>& uv) {
+  std::vector<float> flipped(uv);
+  for (std::size_t i = 1; i < flipped.size(); i += 2) flipped[i] = 1.0f - flipped[i];
+  tinygltf::Accessor accessor;
+  accessor.bufferView =
+      addBufferView(model, flipped.data(), flipped.size() * sizeof(float), TINYGLTF_TARGET_ARRAY_BUFFER);
+  accessor.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
+  accessor.type = TINYGLTF_TYPE_VEC2;
+  accessor.count = flipped.size() / 2;
+  model.accessors.push_back(accessor);
+  return int(model.accessors.size()) - 1;
+}
+
 int addIndices(tinygltf::Model& model, const std::vector<Vec3i>& triangles) {
   std::vector<std::uint32_t> indices;
   indices.reserve(triangles.size() * 3);
@@ -71,6 +86,8 @@ tinygltf::Model buildModel(const Mesh& mesh) {
   primitive.attributes["POSITION"] = addVec3Attribute(model, mesh.positions, true);
   primitive.attributes["NORMAL"] = addVec3Attribute(model, mesh.normals, false);
   if (!mesh.colors.empty()) primitive.attributes["COLOR_0"] = addVec3Attribute(model, mesh.colors, false);
+  if (auto uv = mesh.attributes.find(kUvAttribute); uv != mesh.attributes.end() && uv->second.components == 2)
+    primitive.attributes["TEXCOORD_0"] = addTexcoordAttribute(model, uv->second.values);
   primitive.indices = addIndices(model, mesh.triangles);
 
   tinygltf::Material material;

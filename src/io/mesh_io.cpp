@@ -24,8 +24,10 @@ Mesh readMesh(const std::string& path) {
     parse = parseOff;
   else if (extension == "stl")
     parse = parseStl;
+  else if (extension == "glb" || extension == "gltf")
+    parse = parseGltf;
   else
-    throw InputError(path, "unsupported mesh format '." + extension + "' (readable: .obj .ply .off .stl)");
+    throw InputError(path, "unsupported mesh format '." + extension + "' (readable: .obj .ply .off .stl .glb .gltf)");
 
   const std::string bytes = readFileBytes(path, kMaxMeshFileBytes);
   Mesh mesh = parse(bytes, path);

@@ -1,5 +1,6 @@
-// OBJ writer: 'v x y z [r g b]', 'vn nx ny nz' and 'f a//a b//b c//c' (1-based). Numbers are
-// written in their shortest exact form, so positions read back bit-identical.
+// OBJ writer: 'v x y z [r g b]', 'vt u v' (the "uv" attribute, if any), 'vn nx ny nz' and
+// 'f a/[a]/a b/[b]/b c/[c]/c' (1-based). Numbers are written in their shortest exact form, so
+// positions read back bit-identical.
 #include "mesh_write_support.h"
 #include "texsynth/io/mesh_io.h"
 
@@ -27,6 +28,16 @@ std::string encodeObj(const Mesh& input) {
       }
     out += '\n';
   }
+  const auto uv = mesh.attributes.find(kUvAttribute);
+  const bool uvs = uv != mesh.attributes.end() && uv->second.components == 2;
+  if (uvs)
+    for (std::size_t i = 0; i < mesh.vertexCount(); ++i) {
+      out += "vt ";
+      mesh_detail::appendFloat(out, uv->second.values[2 * i]);
+      out += ' ';
+      mesh_detail::appendFloat(out, uv->second.values[2 * i + 1]);
+      out += '\n';
+    }
   for (const Vec3f& n : mesh.normals) {
     appendVector("vn", n);
     out += '\n';
@@ -36,7 +47,9 @@ std::string encodeObj(const Mesh& input) {
     for (int k = 0; k < 3; ++k) {
       out += ' ';
       mesh_detail::appendInt(out, t[k] + 1);
-      out += "//";
+      out += '/';
+      if (uvs) mesh_detail::appendInt(out, t[k] + 1);
+      out += '/';
       mesh_detail::appendInt(out, t[k] + 1);
     }
     out += '\n';

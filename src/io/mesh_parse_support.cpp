@@ -118,10 +118,14 @@ void requirePlausibleCount(std::uint64_t count, std::uint64_t minBytesEach, std:
 }
 
 void addPolygon(std::span<const int> polygon, std::vector<Vec3i>& triangles) {
+  addPolygon(polygon, polygon, triangles);
+}
+
+void addPolygon(std::span<const int> polygon, std::span<const int> corners, std::vector<Vec3i>& triangles) {
   for (std::size_t k = 1; k + 1 < polygon.size(); ++k) {
     int a = polygon[0], b = polygon[k], c = polygon[k + 1];
     if (a == b || b == c || a == c) continue;
-    triangles.emplace_back(a, b, c);
+    triangles.emplace_back(corners[0], corners[k], corners[k + 1]);
   }
 }
 

@@ -68,5 +68,8 @@ void requirePlausibleCount(std::uint64_t count, std::uint64_t minBytesEach, std:
 // Appends a polygon (0-based indices) as a triangle fan around its first vertex, dropping
 // triangles that repeat an index (degenerate).
 void addPolygon(std::span<const int> polygon, std::vector<Vec3i>& triangles);
+// The same fan over per-corner values (texture coordinate indices ...): appends `corners`' values
+// for exactly the triangles addPolygon(polygon) keeps.
+void addPolygon(std::span<const int> polygon, std::span<const int> corners, std::vector<Vec3i>& triangles);
 
 }  // namespace texsynth::mesh_detail

@@ -1,7 +1,9 @@
-// PLY reader (ascii, binary little and big endian). Keeps vertex x,y,z, optional nx,ny,nz and
-// red,green,blue (integer colors scaled by their type's range, float colors taken as 0..1),
-// and the face list 'vertex_indices' (or 'vertex_index'), fan-triangulated. Every other
-// element and property is read past according to its declared type.
+// PLY reader (ascii, binary little and big endian). Keeps vertex x,y,z, optional nx,ny,nz,
+// red,green,blue (integer colors scaled by their type's range, float colors taken as 0..1) and
+// texture coordinates (u,v or s,t or texture_u,texture_v or texture_s,texture_t: attribute "uv"),
+// every other scalar vertex property as a one-component attribute of its name, and the face list
+// 'vertex_indices' (or 'vertex_index'), fan-triangulated. Every other element and property is read
+// past according to its declared type.
 #include <array>
 #include <vector>
 
@@ -14,7 +16,8 @@ namespace {
 using namespace mesh_detail;
 
 // What a vertex property feeds.
-enum class Role { Ignore, X, Y, Z, NX, NY, NZ, Red, Green, Blue };
+enum class Role { Ignore, X, Y, Z, NX, NY, NZ, Red, Green, Blue, U, V, Attribute };
+constexpr std::size_t kFixedRoles = 12;  // the roles before Attribute: one value each per vertex
 
 Role roleOf(std::string_view name) {
   static constexpr std::pair<std::string_view, Role> kRoles[] = {{"x", Role::X},
@@ -31,7 +34,19 @@ Role roleOf(std::string_view name) {
                                                                  {"diffuse_blue", Role::Blue}};
   for (const auto& [roleName, role] : kRoles)
     if (roleName == name) return role;
-  return Role::Ignore;
+  return Role::Attribute;
+}
+
+// The texture coordinate pair of a vertex element: the first of the usual spellings whose both
+// properties it has (indices into its properties), or {-1, -1}.
+std::pair<int, int> uvProperties(const PlyElement& element) {
+  static constexpr std::pair<std::string_view, std::string_view> kPairs[] = {
+      {"u", "v"}, {"s", "t"}, {"texture_u", "texture_v"}, {"texture_s", "texture_t"}};
+  for (const auto& [u, v] : kPairs) {
+    const int iu = element.find(u), iv = element.find(v);
+    if (iu >= 0 && iv >= 0) return {iu, iv};
+  }
+  return {-1, -1};
 }
 
 float colorScale(PlyType type) {
@@ -82,13 +97,16 @@ class PlyBodyReader {
 
   void readVertices(const PlyElement& element) {
     std::vector<Role> roles;
-    std::array<bool, 10> present{};
+    std::array<bool, kFixedRoles> present{};
+    const auto [uIndex, vIndex] = uvProperties(element);
     for (const PlyProperty& property : element.properties) {
-      Role role = roleOf(property.name);
+      const int index = int(roles.size());
+      Role role = index == uIndex ? Role::U : index == vIndex ? Role::V : roleOf(property.name);
+      if (role == Role::Attribute && property.isList) role = Role::Ignore;  // lists are read past
       if (role != Role::Ignore && property.isList)
         failAtLine(source_, element.line, "vertex property '" + property.name + "' is a list");
       roles.push_back(role);
-      present[std::size_t(role)] = true;
+      if (role != Role::Attribute) present[std::size_t(role)] = true;
     }
     auto has = [&](Role r) { return present[std::size_t(r)]; };
     if (!has(Role::X) || !has(Role::Y) || !has(Role::Z))
@@ -100,10 +118,23 @@ class PlyBodyReader {
     mesh_.positions.resize(n);
     if (normals) mesh_.normals.resize(n);
     if (colors) mesh_.colors.resize(n);
+    std::vector<float>* uv = nullptr;
+    if (has(Role::U)) {
+      VertexAttribute& attribute = mesh_.attributes[kUvAttribute];
+      attribute = {2, std::vector<float>(2 * n)};
+      uv = &attribute.values;
+    }
+    std::vector<std::vector<float>*> attributeValues(roles.size(), nullptr);  // per property
+    for (std::size_t p = 0; p < roles.size(); ++p)
+      if (roles[p] == Role::Attribute) {
+        VertexAttribute& attribute = mesh_.attributes[element.properties[p].name];
+        attribute = {1, std::vector<float>(n)};
+        attributeValues[p] = &attribute.values;
+      }
     in_.position.element = &element;
     for (std::size_t i = 0; i < n; ++i) {
       in_.position.item = i;
-      float values[10] = {};
+      float values[kFixedRoles] = {};
       for (std::size_t p = 0; p < roles.size(); ++p) {
         const PlyProperty& property = element.properties[p];
         if (property.isList) {
@@ -111,13 +142,18 @@ class PlyBodyReader {
           continue;
         }
         float v = float(in_.value(property.type));
-        if (roles[p] >= Role::Red) v *= colorScale(property.type);
+        if (roles[p] == Role::Attribute) {
+          (*attributeValues[p])[i] = v;
+          continue;
+        }
+        if (roles[p] >= Role::Red && roles[p] <= Role::Blue) v *= colorScale(property.type);
         values[std::size_t(roles[p])] = v;
       }
       auto at = [&](Role r) { return values[std::size_t(r)]; };
       mesh_.positions[i] = Vec3f(at(Role::X), at(Role::Y), at(Role::Z));
       if (normals) mesh_.normals[i] = Vec3f(at(Role::NX), at(Role::NY), at(Role::NZ));
       if (colors) mesh_.colors[i] = Vec3f(at(Role::Red), at(Role::Green), at(Role::Blue));
+      if (uv) (*uv)[2 * i] = at(Role::U), (*uv)[2 * i + 1] = at(Role::V);
     }
   }
 

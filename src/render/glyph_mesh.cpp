@@ -81,33 +81,4 @@ void appendAxisGlyph(Mesh& mesh, const Vec3f& center, const Frame& frame, float 
   }
 }
 
-void appendSquare(Mesh& mesh, const Vec3f& center, const Vec3f& u, const Vec3f& v, const Vec3f& color) {
-  requireAnnotatable(mesh);
-  appendQuad(mesh, center - u - v, center + u - v, center + u + v, center - u + v, color);
-}
-
-Mesh clipMesh(const Mesh& mesh, const Vec3f& normal, float offset) {
-  Mesh out;
-  std::vector<int> remap(mesh.positions.size(), -1);
-  const bool colors = mesh.colors.size() == mesh.positions.size();
-  const bool normals = mesh.normals.size() == mesh.positions.size();
-  for (const Vec3i& t : mesh.triangles) {
-    Vec3f centroid = (mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3.0f;
-    if (normal.dot(centroid) > offset) continue;
-    Vec3i kept;
-    for (int k = 0; k < 3; ++k) {
-      int& r = remap[std::size_t(t[k])];
-      if (r < 0) {
-        r = int(out.positions.size());
-        out.positions.push_back(mesh.positions[t[k]]);
-        if (colors) out.colors.push_back(mesh.colors[t[k]]);
-        if (normals) out.normals.push_back(mesh.normals[t[k]]);
-      }
-      kept[k] = r;
-    }
-    out.triangles.push_back(kept);
-  }
-  return out;
-}
-
 }  // namespace texsynth

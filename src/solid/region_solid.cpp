@@ -4,7 +4,7 @@
 #include <string>
 
 #include "texsynth/core/error.h"
-#include "texsynth/field/surface_projector.h"
+#include "texsynth/geometry/surface_projector.h"
 
 namespace texsynth {
 

@@ -40,18 +40,6 @@ SurfaceColorFunction surfaceColorFunction(const SolidTexture& solid) {
   };
 }
 
-Vec3i samplingGridSize(const Box3f& box, int resolution) {
-  if (!box.valid() || !box.min.allFinite() || !box.max.allFinite())
-    throw ParameterError("box", "must be a finite, non-empty box");
-  const float longest = box.size().maxCoeff();
-  if (!(longest > 0.0f)) throw ParameterError("box", "has zero extent");
-  if (resolution < 1 || resolution > 4096)
-    throw ParameterError("resolution", "must be in [1, 4096], got " + std::to_string(resolution));
-  Vec3i size;
-  for (int a = 0; a < 3; ++a) size[a] = std::max(1, int(std::lround(resolution * box.size()[a] / longest)));
-  return size;
-}
-
 Image sampleSlice(const SolidTexture& solid, const Box3f& box, int axis, float position, int resolution) {
   if (axis < 0 || axis > 2) throw ParameterError("axis", "must be 0 (x), 1 (y) or 2 (z)");
   if (!(position >= 0.0f && position <= 1.0f)) throw ParameterError("position", "must be in [0, 1]");

@@ -24,7 +24,7 @@ struct Inputs {
   test::TempDir dir;
   std::string exemplar = dir.file("ex.png"), tiny = dir.file("one.png"), mask = dir.file("mask.png");
   std::string cube = dir.file("cube.ply"), flat = dir.file("flat.off"), sketch = dir.file("sketch.json");
-  std::string volume = dir.file("vol.nrrd");
+  std::string volume = dir.file("vol.nrrd"), colored = dir.file("colored.ply");
 
   Inputs() {
     writeImage(exemplar, test::makeTestPattern(32, 32));
@@ -35,6 +35,12 @@ struct Inputs {
     writeMesh(cube, makeBoxMesh(Vec3f::Zero(), Vec3f::Ones()));
     test::writeBytes(flat, "OFF\n3 1 0\n0.5 0.5 0.5\n0.5 0.5 0.5\n0.5 0.5 0.5\n3 0 1 2\n");
     test::writeBytes(sketch, R"({"curves": [{"points": [[0.1, 0.2, 1.0], [0.5, 0.5, 1.0], [0.9, 0.6, 1.0]]}]})");
+    // A closed octahedron with vertex colors: eval's mesh mode.
+    Mesh octahedron;
+    octahedron.positions = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    octahedron.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+    octahedron.colors = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}, {0, 1, 1}, {1, 0, 1}};
+    writeMesh(colored, octahedron);
   }
   RunResult run(const std::string& arguments) const { return runTexsynth(arguments + " --quiet", dir); }
   std::string image(const std::string& flags) const {
@@ -266,7 +272,11 @@ std::string sweepCommand(const std::string& command, const HelpOption& option, c
     if (flag == "--render-size" || flag == "--views" || flag == "--glyphs") base += " --render " + out + "_g.png";
   }
   if (command == "render") base = "render " + in.cube + " -o " + out + ".png" + (flag == "--size" ? "" : " --size 16");
-  if (command == "eval") base = "eval " + in.exemplar + " " + (flag == "--slices" ? in.volume : in.exemplar);
+  if (command == "eval")
+    base = "eval " + in.exemplar + " " +
+           (flag == "--slices"    ? in.volume
+            : flag == "--samples" ? in.colored
+                                  : in.exemplar);
   if (command == "demo") base = "demo -o " + out + " --exemplar " + in.exemplar + " --mesh " + in.cube;
   const std::string& d = option.description;
   if (d.rfind("lazy", 0) == 0)  // one level without passes: accepted values finish in a second
@@ -283,7 +293,7 @@ TEST(ReliabilityArguments, SweepOfEveryNumericFlag) {
   Inputs in;
   ASSERT_EQ(in.run("solid " + in.exemplar + " -o " + in.volume + " --resolution 16").exitCode, 0);
   const std::map<std::string, std::size_t> expected = {{"image", 16}, {"solid", 17}, {"field", 7},
-                                                       {"render", 5}, {"eval", 3},   {"demo", 2}};
+                                                       {"render", 5}, {"eval", 4},   {"demo", 2}};
   const std::vector<std::string> values = {"nan", "inf", "-1", "0", "1e300", "99999999999999999999"};
   int tried = 0;
   for (const auto& [name, minimum] : expected) {

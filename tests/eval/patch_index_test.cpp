@@ -9,6 +9,7 @@
 #include "eval_test_images.h"
 #include "test_support.h"
 #include "texsynth/core/parallel.h"
+#include "texsynth/core/random.h"
 
 namespace texsynth {
 namespace {
@@ -117,6 +118,108 @@ TEST(PatchIndex, SameResultForAnyThreadCount) {
     EXPECT_EQ(one[i].index, two[i].index);
     EXPECT_EQ(one[i].meanSquared, two[i].meanSquared);
   }
+}
+
+// Every patch of `image` as a raw vector (rows top to bottom, channels innermost), row-major.
+std::vector<float> patchVectors(const Image& image, int size) {
+  std::vector<float> values;
+  for (int y = 0; y + size <= image.height; ++y)
+    for (int x = 0; x + size <= image.width; ++x)
+      for (int dy = 0; dy < size; ++dy)
+        values.insert(values.end(), image.pixel(x, y + dy), image.pixel(x, y + dy) + size * image.channels);
+  return values;
+}
+
+TEST(PatchIndex, NearestVectorsAgreesWithNearestOnImagePatches) {
+  // Near queries (a crop of the texture) and far ones (noise), colour and gray.
+  Image big = scaled(makeTestPattern(80, 80, 3), 255);
+  const Image reference = big.crop(0, 0, 48, 48);
+  for (const Image& queries : {big.crop(17, 9, 40, 36), scaled(noise(20, 18, 5), 255)}) {
+    PatchIndex index(reference, 7);
+    const std::vector<float> values = patchVectors(queries, 7);
+    const std::size_t count = values.size() / (7 * 7 * 3);
+    std::vector<PatchMatch> expected = index.nearest(queries), found = index.nearestVectors(values, count);
+    ASSERT_EQ(found.size(), expected.size());
+    // The same distance (the neighbour itself may differ only among ties within float rounding).
+    for (std::size_t i = 0; i < found.size(); ++i)
+      EXPECT_NEAR(found[i].meanSquared, expected[i].meanSquared, 1e-6 * std::max(1.0, expected[i].meanSquared))
+          << "query " << i;
+  }
+  Image gray = scaled(makeTestPattern(50, 50, 9).withChannels(1), 255);
+  PatchIndex grayIndex(gray, 5);
+  std::vector<double> brute = bruteForceNearest(gray.crop(3, 4, 20, 20), gray, 5);
+  std::vector<PatchMatch> found = grayIndex.nearestVectors(patchVectors(gray.crop(3, 4, 20, 20), 5), brute.size());
+  for (std::size_t i = 0; i < found.size(); ++i) EXPECT_EQ(found[i].meanSquared, 0.0);
+}
+
+TEST(PatchIndex, NearestVectorsMatchesBruteForceOnTransformedPatches) {
+  // Mirrored patches of the reference: not patches of any image the index saw.
+  Image reference = scaled(makeTestPattern(40, 40, 6), 255);
+  const int size = 5, channels = 3;
+  std::vector<float> values;
+  std::vector<double> expected;
+  PatchIndex index(reference, size);
+  for (int q = 0; q < 60; ++q) {
+    const int x = int(uniformBelow(hashKey(3, q, 0), 36)), y = int(uniformBelow(hashKey(3, q, 1), 36));
+    std::vector<float> patch;
+    for (int dy = 0; dy < size; ++dy)
+      for (int dx = size - 1; dx >= 0; --dx)
+        patch.insert(patch.end(), reference.pixel(x + dx, y + dy), reference.pixel(x + dx, y + dy) + channels);
+    double best = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < int(index.size()); ++i) {
+      double sum = 0;
+      for (int dy = 0; dy < size; ++dy)
+        for (int k = 0; k < size * channels; ++k) {
+          double diff = double(patch[dy * size * channels + k]) -
+                        double(reference.pixel(i % index.columns(), i / index.columns() + dy)[k]);
+          sum += diff * diff;
+        }
+      best = std::min(best, sum / (size * size * channels));
+    }
+    expected.push_back(best);
+    values.insert(values.end(), patch.begin(), patch.end());
+  }
+  // Limits: at the nearest distance the nearest is still found; below it, nothing is.
+  std::vector<double> atNearest = expected, belowNearest;
+  for (double e : expected) belowNearest.push_back(0.9 * e - 0.01);
+  std::vector<PatchMatch> bounded = index.nearestVectors(values, expected.size(), atNearest);
+  std::vector<PatchMatch> none = index.nearestVectors(values, expected.size(), belowNearest);
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_NEAR(bounded[i].meanSquared, expected[i], 1e-6 * std::max(1.0, expected[i])) << "query " << i;
+    EXPECT_EQ(none[i].index, -1) << "query " << i;
+    EXPECT_EQ(none[i].meanSquared, std::numeric_limits<double>::infinity());
+  }
+  std::vector<PatchMatch> one, two;
+  {
+    ThreadLimit limit(1);
+    one = index.nearestVectors(values, expected.size());
+  }
+  {
+    ThreadLimit limit(2);
+    two = index.nearestVectors(values, expected.size());
+  }
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_NEAR(one[i].meanSquared, expected[i], 1e-6 * std::max(1.0, expected[i])) << "query " << i;
+    EXPECT_EQ(one[i].index, two[i].index);
+    EXPECT_EQ(one[i].meanSquared, two[i].meanSquared);
+  }
+}
+
+TEST(PatchIndex, NearestVectorsRejectsBadInput) {
+  PatchIndex index(makeTestPattern(10, 10), 3);
+  EXPECT_TRUE(index.nearestVectors({}, 0).empty());
+  std::vector<float> values(27 * 2, 0.5f);
+  EXPECT_EQ(index.nearestVectors(values, 2).size(), 2u);
+  EXPECT_THROW(index.nearestVectors(values, 3), ParameterError);  // too few values
+  values.push_back(0);
+  EXPECT_THROW(index.nearestVectors(values, 2), ParameterError);  // a partial vector
+  values.pop_back();
+  EXPECT_THROW(index.nearestVectors(values, 2, std::vector<double>{1.0}), ParameterError);  // one limit
+  EXPECT_THROW(index.nearestVectors(values, 2, std::vector<double>{1.0, -1.0}), ParameterError);
+  EXPECT_EQ(index.nearestVectors(values, 2, std::vector<double>{0.0, std::numeric_limits<double>::infinity()})[1].index,
+            index.nearestVectors(values, 2)[1].index);
+  values[5] = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_THROW(index.nearestVectors(values, 2), ParameterError);
 }
 
 TEST(PatchIndex, RejectsBadInput) {

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "field_test_support.h"
+#include "texsynth/geometry/mesh_cut.h"
 #include "texsynth/render/glyph_mesh.h"
 
 using namespace texsynth;

@@ -30,12 +30,6 @@ std::unique_ptr<SolidTexture> volumeSolid() {
 
 }  // namespace
 
-TEST(SolidConsumers, GridFollowsTheLongestSide) {
-  EXPECT_EQ(samplingGridSize(unitBox(), 40), Vec3i(40, 30, 20));
-  EXPECT_THROW(samplingGridSize(unitBox(), 0), ParameterError);
-  EXPECT_THROW(samplingGridSize(Box3f{}, 8), ParameterError);
-}
-
 TEST(SolidConsumers, SliceEqualsVolumePlane) {
   auto solid = volumeSolid();
   const Box3f box = unitBox();

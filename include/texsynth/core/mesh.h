@@ -8,7 +8,11 @@
 
 namespace texsynth {
 
-// A per-vertex attribute with a fixed number of float components per vertex.
+// A per-vertex attribute with a fixed number of float components per vertex. The readers keep
+// texture coordinates as "uv" (2 components, v up as in OBJ and PLY) and every other scalar PLY
+// vertex property under its own name (1 component).
+inline constexpr const char* kUvAttribute = "uv";
+
 struct VertexAttribute {
   int components = 1;
   std::vector<float> values;  // size vertexCount*components
@@ -26,7 +30,8 @@ struct Mesh {
   Box3f bounds() const;
   // Area-weighted vertex normals (outward for a consistently oriented closed mesh).
   void computeNormals();
-  // Throws InputError(source, ...) if indices are out of range or coordinates not finite.
+  // Throws InputError(source, ...) if indices are out of range, coordinates not finite, or a
+  // per-vertex array (normals, colors, an attribute) does not match the vertex count.
   void validate(const std::string& source) const;
   double surfaceArea() const;
 };

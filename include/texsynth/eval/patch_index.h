@@ -12,6 +12,7 @@
 // depend on the order of queries, the guesses, or the thread count.
 #include <cstddef>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "texsynth/core/image.h"
@@ -41,6 +42,20 @@ class PatchIndex {
   // The nearest indexed patch of every patch fully inside `queries` (same channel count),
   // in row-major order of the query patch positions. Runs in parallel over fixed blocks.
   std::vector<PatchMatch> nearest(const Image& queries) const;
+
+  // The nearest indexed patch of each of `count` query vectors given as raw values: `queries`
+  // holds count * patchSize * patchSize * channels floats, each vector in the layout of an
+  // indexed patch (rows top to bottom, pixels left to right, channels innermost) and in the same
+  // units as the indexed image. For patches that come from elsewhere (resampled on a surface,
+  // transformed). The same exact search as nearest(), without guesses; the distance is recomputed
+  // in double. `limits` is empty or has one mean squared difference per query: then only a patch
+  // within the limit is looked for, and a query with none gets index -1 and meanSquared infinity
+  // (one a hair past the limit may still be reported). A tight limit (the best distance so far
+  // over several variants of a patch) prunes most of the search. Runs in parallel over fixed
+  // blocks; ties go to the lowest patch index. Throws ParameterError("queries" / "limits", ...)
+  // when the sizes do not fit or a value is not finite (limits may be +infinity, not negative).
+  std::vector<PatchMatch> nearestVectors(std::span<const float> queries, std::size_t count,
+                                         std::span<const double> limits = {}) const;
 
   // Indices (ascending) of all indexed patches whose mean squared difference to the patch of
   // `image` at top-left (x, y) is at most `limit`.

@@ -8,7 +8,7 @@
 
 #include "texsynth/core/math.h"
 #include "texsynth/field/sketch.h"
-#include "texsynth/field/surface_projector.h"
+#include "texsynth/geometry/surface_projector.h"
 
 namespace texsynth {
 

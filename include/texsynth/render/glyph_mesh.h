@@ -1,5 +1,5 @@
 #pragma once
-// Annotation geometry for renders: thin sticks, polylines, axis glyphs and flat squares, built
+// Annotation geometry for renders: thin sticks, polylines and axis glyphs, built
 // as coloured triangles (with flat normals) and appended to a mesh, so the ordinary rasterizer
 // draws them with correct occlusion. Used for rotation-field glyphs and sketch curves.
 #include <vector>
@@ -28,12 +28,5 @@ void appendPolyline(Mesh& mesh, const std::vector<Vec3f>& points, float radius, 
 // long; `centered` draws them through the centre instead (length / 2 each way).
 void appendAxisGlyph(Mesh& mesh, const Vec3f& center, const Frame& frame, float length, float radius,
                      bool centered = false);
-
-// A flat square (two triangles) centred at `center`, spanned by half-edge vectors u and v.
-void appendSquare(Mesh& mesh, const Vec3f& center, const Vec3f& u, const Vec3f& v, const Vec3f& color);
-
-// The triangles whose centroid satisfies normal . p <= offset (a half-space cut), with their
-// vertices, colours and normals.
-Mesh clipMesh(const Mesh& mesh, const Vec3f& normal, float offset);
 
 }  // namespace texsynth

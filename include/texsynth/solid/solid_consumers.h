@@ -10,6 +10,7 @@
 #include "texsynth/core/image.h"
 #include "texsynth/core/mesh.h"
 #include "texsynth/core/volume.h"
+#include "texsynth/geometry/sampling_grid.h"  // samplingGridSize
 #include "texsynth/render/render_mesh.h"
 #include "texsynth/solid/solid_texture.h"
 
@@ -22,10 +23,6 @@ void colorMeshVertices(Mesh& mesh, const SolidTexture& solid);
 // A colour function for renderMesh that evaluates the solid at every visible surface point
 // (with its interpolated normal). `solid` must outlive the returned function.
 SurfaceColorFunction surfaceColorFunction(const SolidTexture& solid);
-
-// Grid size (x, y, z) for `resolution` voxels along the longest side of `box`.
-// Throws ParameterError("box" | "resolution", ...).
-Vec3i samplingGridSize(const Box3f& box, int resolution);
 
 // The slice normal to `axis` (0 = x, 1 = y, 2 = z) at `position` in [0, 1] across the box.
 // Image axes (u right, v down) as in eval: normal x -> (y, z), normal y -> (x, z), normal

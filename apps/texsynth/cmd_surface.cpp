@@ -1,0 +1,362 @@
+// texsynth surface EXEMPLAR --mesh M -o out.ply|.glb: texture grown directly on a mesh's surface
+// by discrete optimization (surface synthesis, Han et al.), as vertex colors of a retiled copy;
+// or, with --apply-coords, another map of the same material through a stored synthesis.
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+
+#include "cli_common.h"
+#include "mode_flags.h"
+#include "number_checks.h"
+#include "surface_args.h"
+#include "texsynth/core/atomic_file.h"
+#include "texsynth/core/error.h"
+#include "texsynth/core/memory_budget.h"
+#include "texsynth/core/mesh_weld.h"
+#include "texsynth/exemplar/analysis_cache.h"
+#include "texsynth/exemplar/gaussian_stack.h"
+#include "texsynth/field/field_designer.h"
+#include "texsynth/field/field_io.h"
+#include "texsynth/field/sketch.h"
+#include "texsynth/geometry/mesh_hierarchy_cache.h"
+#include "texsynth/io/file_kind.h"
+#include "texsynth/io/image_io.h"
+#include "texsynth/io/mesh_io.h"
+#include "texsynth/surface/surface_coordinates.h"
+#include "texsynth/surface/surface_synthesis.h"
+
+namespace texsynth::cli {
+
+namespace {
+
+using nlohmann::json;
+
+// Flags only synthesis uses: --apply-coords looks a stored synthesis up, it synthesizes nothing.
+const std::vector<ModeFlag> kSurfaceModeFlags = {
+    {"--mesh", {"synthesis"}},       {"--vertices", {"synthesis"}}, {"--levels", {"synthesis"}},
+    {"--iterations", {"synthesis"}}, {"--field", {"synthesis"}},    {"--sketch", {"synthesis"}},
+    {"--up", {"synthesis"}},         {"--coords", {"synthesis"}},   {"--bake", {"synthesis"}},
+    {"--bake-size", {"synthesis"}},
+};
+
+// Peak memory of a synthesis, measured with `/usr/bin/time -f %M` on the bunny (brick.pat, 2 threads):
+// 210 MB at 48k vertices, 490 MB at 200k (retiling, neighborhoods of both sizes on every level,
+// the solver's state); this rounds the slope and the base up.
+constexpr double kBaseBytes = 64.0 * 1024 * 1024, kBytesPerVertex = 4096.0;
+
+// "X,Y,Z": three finite numbers, not all zero (only the direction matters).
+Vec3f parseDirection(const std::string& text, const std::string& flag) {
+  Vec3f direction;
+  std::size_t start = 0;
+  for (int axis = 0; axis < 3; ++axis) {
+    const std::size_t comma = axis < 2 ? text.find(',', start) : text.size();
+    float value = 0;
+    if (start < text.size() && text[start] == '+') ++start;  // from_chars takes no plus sign
+    const char* end = text.data() + std::min(comma, text.size());
+    bool parsed = comma != std::string::npos && comma > start;
+    if (parsed) {
+      const auto result = std::from_chars(text.data() + start, end, value);
+      parsed = result.ec == std::errc() && result.ptr == end;
+    }
+    if (!parsed || !std::isfinite(value) || (axis == 2 && text.find(',', start) != std::string::npos))
+      throw ParameterError(flag, "'" + text + "': give a direction as three finite numbers X,Y,Z (e.g. 0,1,0)");
+    direction[axis] = value;
+    start = comma + 1;
+  }
+  if (!(direction.norm() > 0)) throw ParameterError(flag, "'" + text + "': the direction must not be zero");
+  return direction;
+}
+
+// Every usage check, before any file is read.
+void checkUsage(const CLI::App& parser, const SurfaceArgs& args) {
+  const bool apply = !args.applyCoords.empty();
+  rejectFlagsOutsideMode(parser, kSurfaceModeFlags, apply ? "--apply-coords" : "synthesis", "with --apply-coords");
+  rejectFlagsOutsideMode(parser, {{"--render-size", {"--render"}}, {"--views", {"--render"}}},
+                         args.render.empty() ? "" : "--render", "without --render");
+  rejectFlagsOutsideMode(parser, {{"--bake-size", {"--bake"}}}, args.bake.empty() ? "" : "--bake", "without --bake");
+  if (!apply && args.mesh.empty())
+    throw ParameterError("--mesh", "is required: the mesh to texture (" + readableMeshExtensions() + ")");
+  if (!args.up.empty() && (!args.field.empty() || !args.sketch.empty()))
+    throw ParameterError("--up", "sets the default field's direction; with " +
+                                     std::string(args.field.empty() ? "--sketch" : "--field") +
+                                     " that field orients the texture: drop one");
+  for (const std::string& out : args.outputs) {
+    const std::string ext = fileExtension(out);
+    if (ext != "ply" && ext != "obj" && ext != "glb" && ext != "gltf")
+      throw ParameterError("--output", "'" + out + "' is not a mesh file name texsynth writes (.ply .obj .glb .gltf)");
+  }
+  for (const auto& [flag, path] : {std::pair{"--render", &args.render}, std::pair{"--bake", &args.bake}})
+    if (!path->empty() && fileKind(*path) != FileKind::Image)
+      throw ParameterError(flag, "'" + *path + "' is not an image file name (" + readableImageExtensions() + ")");
+  // Only PLY keeps named float vertex properties.
+  for (const auto& [flag, path] : {std::pair{"--coords", &args.coords}, std::pair{"--apply-coords", &args.applyCoords}})
+    if (!path->empty() && fileExtension(*path) != "ply")
+      throw ParameterError(flag, "'" + *path + "': source coordinates are stored only in PLY files (.ply)");
+  if (apply && args.outputs.empty())
+    throw ParameterError("--output", "give -o: the mesh with the colors of EXEMPLAR at the stored coordinates");
+  if (args.outputs.empty() && args.render.empty() && args.coords.empty() && args.bake.empty())
+    throw ParameterError("--output", "nothing to write: give -o (mesh), --render, --bake or --coords");
+  if (!apply)
+    requireMemory(kBaseBytes + double(args.vertices) * kBytesPerVertex, "--vertices",
+                  std::to_string(args.vertices) + " vertices");
+  requireSurfaceOutputMemory(args);
+}
+
+// The mesh side's errors name the mesh file, not the library's "mesh".
+template <typename Work>
+auto namingMesh(const std::string& path, Work work) {
+  try {
+    return work();
+  } catch (const InputError& e) {
+    if (e.file() == "mesh") throw InputError(path, e.problem());
+    throw;
+  }
+}
+
+json historyJson(const std::vector<OptimizationIteration>& history) {
+  json steps = json::array();
+  for (const OptimizationIteration& h : history)
+    steps.push_back({{"level", h.level},
+                     {"neighborhood", h.neighborhoodSize},
+                     {"iteration", h.iteration},
+                     {"energy", h.energy},
+                     {"changed", h.changedMatches},
+                     {"neighborhoods", h.neighborhoods},
+                     {"seconds", h.seconds}});
+  return steps;
+}
+
+std::string seconds(double s) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f s", s);
+  return text;
+}
+
+void finish(const SurfaceArgs& args, const GlobalOptions& globals, json& report, const SurfaceResult& result,
+            Progress& progress, const std::string& summary) {
+  auto start = std::chrono::steady_clock::now();
+  report["outputs"] = writeSurfaceOutputs(args, result, progress);
+  report["outputs_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  takePeakResidentMiB();
+  report["peak_rss_mib"] = processPeakResidentMiB();
+  std::string files;
+  for (const json& out : report["outputs"]) files += (files.empty() ? "" : ", ") + out["file"].get<std::string>();
+  finishReport(globals, report, args.stats, summary + "; wrote " + files);
+}
+
+void runApplyCoords(const SurfaceArgs& args, const GlobalOptions& globals) {
+  const auto start = std::chrono::steady_clock::now();
+  const Image exemplar = readImage(args.exemplar);
+  SurfaceResult result;
+  result.colored = readMesh(args.applyCoords);
+  result.sources = sourcesFromCoordinates(result.colored, exemplar.width, exemplar.height, args.applyCoords);
+  result.colored.attributes.clear();
+  result.colored.colors = colorsOfSources(exemplar, result.sources);
+  result.exemplarWidth = exemplar.width, result.exemplarHeight = exemplar.height;
+  json report = {{"exemplar", args.exemplar},
+                 {"exemplar_size", {exemplar.width, exemplar.height}},
+                 {"apply_coords", args.applyCoords},
+                 {"vertices", {result.colored.vertexCount()}}};
+  report["lookup_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  auto progress = makeProgress(globals);
+  finish(args, globals, report, result, *progress,
+         "applied " + args.applyCoords + " to " + std::to_string(result.colored.vertexCount()) + " vertices");
+}
+
+void runSurface(const CLI::App& parser, const SurfaceArgs& args, const GlobalOptions& globals) {
+  checkUsage(parser, args);
+  if (!args.applyCoords.empty()) return runApplyCoords(args, globals);
+  const auto start = std::chrono::steady_clock::now();
+  auto clock = start;
+  auto lap = [&clock] {
+    const auto now = std::chrono::steady_clock::now();
+    const double s = std::chrono::duration<double>(now - clock).count();
+    clock = now;
+    return s;
+  };
+
+  const Image exemplar = readImage(args.exemplar);
+  const Mesh input = readMesh(args.mesh);
+  if (!args.bake.empty() && !input.attributes.count(kUvAttribute))
+    throw ParameterError("--bake", "'" + args.mesh +
+                                       "' has no texture coordinates (UVs) to bake into; give a mesh with them "
+                                       "(OBJ vt, PLY s,t or u,v) or drop --bake");
+  // UV and normal seams store a vertex once per side; synthesis must see one surface across them.
+  const WeldedMesh welded = weldCoincidentVertices(input);
+  if (welded.mesh.triangles.empty()) throw InputError(args.mesh, "every face has coinciding corners (zero area)");
+
+  TextureOptimizationOptions options;
+  options.seed = globals.seed;
+  // Without --levels, a small exemplar gets the levels its Gaussian stack has (as `image --method optimize`).
+  options.levels = parser.count("--levels")
+                       ? args.levels
+                       : std::min(args.levels, defaultStackLevelCount(exemplar.width, exemplar.height));
+  options.maxIterations = args.iterations;
+  MeshHierarchyOptions hierarchyOptions;
+  hierarchyOptions.vertices = args.vertices;
+  hierarchyOptions.levels = options.levels;
+  SurfaceOrientation orientation;
+  if (!args.up.empty()) orientation.smooth.guide = parseDirection(args.up, "--up");
+
+  json report = {{"exemplar", args.exemplar},
+                 {"exemplar_size", {exemplar.width, exemplar.height}},
+                 {"mesh", args.mesh},
+                 {"seed", globals.seed},
+                 {"input",
+                  {{"vertices", input.vertexCount()},
+                   {"triangles", input.triangleCount()},
+                   {"welded_vertices", welded.mesh.vertexCount()}}}};
+  report["read_seconds"] = lap();
+  auto progress = makeProgress(globals);
+  const std::string cache = defaultCacheDirectory();
+  std::vector<ExemplarAnalysis> analyses;
+  for (const AnalysisOptions& analysisOptions : optimizationAnalysisOptions(options))
+    analyses.push_back(analyzeExemplarCached(exemplar, analysisOptions, cache, *progress));
+  report["analysis_seconds"] = lap();
+
+  const bool cached =
+      std::filesystem::exists(meshHierarchyCachePath(cache, meshHierarchyCacheKey(welded.mesh, hierarchyOptions)));
+  MeshHierarchy hierarchy = namingMesh(
+      args.mesh, [&] { return buildMeshHierarchyCached(welded.mesh, hierarchyOptions, args.mesh, cache, *progress); });
+  report["hierarchy_cached"] = cached;
+  report["hierarchy_seconds"] = lap();
+
+  std::optional<RotationField> field;
+  if (!args.field.empty()) field = readField(args.field).rotations;
+  if (!args.sketch.empty())
+    field = namingMesh(args.mesh, [&] {
+              return designField(input, readSketch(args.sketch), {}, *progress, args.sketch);
+            }).rotations;
+  if (field) orientation.field = &*field;
+  report["field_seconds"] = lap();
+  const PreparedSurface surface = namingMesh(args.mesh, [&] {
+    return prepareSurface(std::move(hierarchy), orientation, options.neighborhoodSizes, *progress);
+  });
+  report["prepare_seconds"] = lap();
+  const SurfaceSynthesisResult synthesis = synthesizeSurface(analyses, surface, options, *progress);
+  report["synthesis_seconds"] = lap();
+
+  SurfaceResult result;
+  result.colored = surface.finestMesh();
+  result.colored.attributes.clear();
+  result.colored.colors = synthesis.colors;
+  result.sources = synthesis.sources;
+  result.exemplarWidth = exemplar.width, result.exemplarHeight = exemplar.height;
+  result.uvMesh = &input;
+
+  report["vertices"] = json::array();
+  report["levels"] = json::array();
+  for (const MeshLevel& level : surface.hierarchy.levels) {
+    report["vertices"].push_back(level.mesh.vertexCount());
+    report["levels"].push_back({{"vertices", level.mesh.vertexCount()},
+                                {"triangles", level.mesh.triangleCount()},
+                                {"spacing", level.spacing}});
+  }
+  report["first_level"] = synthesis.firstLevel;
+  report["steps"] = historyJson(synthesis.history);
+  const std::string summary = "synthesized " + std::to_string(result.colored.vertexCount()) + " vertices in " +
+                              seconds(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()) +
+                              " (hierarchy " + seconds(report["hierarchy_seconds"].get<double>()) +
+                              (cached ? ", cached" : "") + "; synthesis " +
+                              seconds(report["synthesis_seconds"].get<double>()) + ")";
+  finish(args, globals, report, result, *progress, summary);
+}
+
+// Where the library's parameters come from on `surface`'s command line.
+ParameterSources surfaceParameterSources(const SurfaceArgs& args) {
+  return {{"exemplar", fromFile(args.exemplar)},
+          {"image", fromFile(args.exemplar)},
+          {"channels", fromFile(args.exemplar)},
+          {"similarCount", fromFile(args.exemplar)},  // too few pixels for the similarity sets
+          {"vertices", fromFlag("--vertices")},
+          {"levels", fromFlag("--levels")},
+          {"levelCount", fromFlag("--levels")},
+          {"iterations", fromFlag("--iterations")},
+          {"guide", fromFlag("--up")},
+          {"width", fromFlag("--render-size")},
+          {"height", fromFlag("--render-size")},
+          {"size", fromFlag("--bake-size")}};
+}
+
+}  // namespace
+
+Command registerSurfaceCommand(CLI::App& app, const GlobalOptions& globals) {
+  auto* sub = app.add_subcommand(
+      "surface",
+      "Grow a texture directly on a mesh's surface (surface texture synthesis by discrete optimization, Han et al.): "
+      "the mesh is retiled to --vertices near-uniform vertices and every vertex copies one pixel of EXEMPLAR, chosen "
+      "so that every neighborhood on the surface looks like a neighborhood of the exemplar. No UV seams, no "
+      "stretching, no tiling.\n"
+      "  Texture density: one exemplar pixel per vertex spacing, so --vertices sets the scale: a 128-pixel-wide "
+      "exemplar spans 128 vertex spacings of the surface. More vertices: smaller features, more repetitions and a "
+      "finer result, at about linear cost.\n"
+      "  Orientation: a direction field on the surface gives the exemplar's up direction (its rows run across it): by "
+      "default a smooth field following world +Y (--up to choose another), or the rotation field of --field / "
+      "--sketch (`texsynth field`).\n"
+      "  Outputs: -o the retiled mesh with vertex colors (.ply .obj .glb .gltf, as often as needed); --render a "
+      "picture; --bake a texture map in the UV layout of --mesh (which must have UVs); --coords each vertex's "
+      "exemplar coordinates, which --apply-coords later re-applies to another map of the same material (normal, "
+      "roughness ...) without synthesizing.\n"
+      "  Caching: the exemplar analysis and the retiled mesh hierarchy are cached (the directory `texsynth --help` "
+      "names): the first run on a mesh spends seconds retiling it, later runs at the same --vertices and --levels "
+      "start synthesizing at once.\n"
+      "Example: texsynth surface brick.png --mesh bunny.off -o bunny.ply --render bunny.png");
+  auto args = std::make_shared<SurfaceArgs>();
+  inputFiles(sub->add_option("EXEMPLAR", args->exemplar,
+                             "Exemplar image (with --apply-coords: another map of the "
+                             "material the coordinates were synthesized from)"))
+      ->required();
+  inputFiles(sub->add_option("--mesh", args->mesh, "Mesh to texture (" + readableMeshExtensions() + ")"));
+  outputFiles(sub->add_option("-o,--output", args->outputs,
+                              "The retiled mesh with vertex colors (.ply .obj .glb .gltf); may be repeated"));
+  sub->add_option("--vertices", args->vertices,
+                  "Vertices of the retiled mesh: the texture's density (one exemplar pixel per vertex spacing)")
+      ->capture_default_str()
+      ->check(integerIn(64, 5000000));
+  sub->add_option("--levels", args->levels,
+                  "Levels of the mesh hierarchy and the exemplar's Gaussian stack, each 4x fewer vertices than the "
+                  "next (default 3, as Han et al.; fewer for an exemplar too small for 3)")
+      ->check(integerIn(1, 6));
+  sub->add_option("--iterations", args->iterations,
+                  "Most E+M iterations per neighborhood size (17, then 9) and level; stops early when no match "
+                  "changes (paper: 1-3)")
+      ->capture_default_str()
+      ->check(integerIn(1, 20));
+  auto* field = inputFiles(
+      sub->add_option("--field", args->field,
+                      "Rotation field (.tsfield from `texsynth field`) whose local x axis is the up direction"));
+  inputFiles(sub->add_option("--sketch", args->sketch,
+                             "Sketch curves (JSON, docs/sketch-format.md) to design the field from first, as "
+                             "`texsynth field`; instead of --field"))
+      ->excludes(field);
+  sub->add_option("--up", args->up,
+                  "X,Y,Z: the world direction the default smooth field follows, i.e. the exemplar's up (default "
+                  "0,1,0); not with --field or --sketch");
+  outputFiles(sub->add_option("--render", args->render, "Render the result to this image"));
+  sub->add_option("--render-size", args->renderSize, "With --render: pixel size of each view")
+      ->capture_default_str()
+      ->check(integerIn(16, 4096));
+  sub->add_option("--views", args->views, "With --render: views side by side, evenly around the model")
+      ->capture_default_str()
+      ->check(integerIn(1, 4));
+  outputFiles(sub->add_option("--bake", args->bake,
+                              "Bake the colors into a texture in the UV layout of --mesh (needs UVs: OBJ vt, PLY s,t "
+                              "or u,v), charts grown a few texels for mip-maps"));
+  sub->add_option("--bake-size", args->bakeSize, "With --bake: texels per side")
+      ->capture_default_str()
+      ->check(integerIn(16, 16384));
+  outputFiles(sub->add_option("--coords", args->coords,
+                              "Also write the retiled mesh with each vertex's exemplar coordinates (PLY properties "
+                              "source_u, source_v in [0, 1]) for --apply-coords"));
+  inputFiles(sub->add_option("--apply-coords", args->applyCoords,
+                             "Re-apply a stored synthesis (a --coords file) to EXEMPLAR, another map of the same "
+                             "material at any resolution: no synthesis, just the lookup; needs -o"));
+  outputFiles(sub->add_option("--stats", args->stats,
+                              "Write timings (per stage and per optimization step) and vertex counts per level as "
+                              "JSON here"));
+  return {sub, [sub, args, &globals] { runSurface(*sub, *args, globals); }, surfaceParameterSources(*args),
+          "--vertices, --render-size or --bake-size"};
+}
+
+}  // namespace texsynth::cli

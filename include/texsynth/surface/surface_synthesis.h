@@ -1,0 +1,92 @@
+#pragma once
+// Texture synthesis on mesh surfaces by discrete optimization (Han et al., "Fast example-based
+// surface texture synthesis via discrete optimization", §2): the texture is grown as vertex
+// colors directly on a retiled mesh, so there are no UV seams and no stretching.
+//
+// - The mesh side (prepareSurface): the retiled hierarchy (geometry/mesh_hierarchy.h), a tangent
+//   direction per vertex (surface/tangent_field.h: a smooth field, or the tangent projection of a
+//   sketch-designed rotation field), and per level and neighborhood size the resampling W_p of
+//   the active vertices' neighborhoods (surface/surface_neighborhoods.h). Computed once; flow
+//   animation reuses it frame after frame.
+// - The synthesis (synthesizeSurface): coarse to fine over the hierarchy, level l reading the
+//   exemplar's Gaussian stack level l; a random coherent start at the coarsest level, then at
+//   every level E+M iterations at 17^2 and then 9^2 (Table 2) of the discrete solver shared with
+//   2D optimize (image/discrete_steps.h: same E-step, M-step, usage term and options); between
+//   levels each vertex's source is upsampled from its parent triangle's nearest corner.
+// The result is a SOURCE per vertex (an exemplar pixel), so colors are looked up at the end and
+// the same synthesis can be re-applied to other maps of the material. Deterministic for any
+// thread count.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "texsynth/core/math.h"
+#include "texsynth/core/progress.h"
+#include "texsynth/exemplar/analysis.h"
+#include "texsynth/field/rotation_field.h"
+#include "texsynth/geometry/mesh_hierarchy.h"
+#include "texsynth/geometry/mesh_topology.h"
+#include "texsynth/image/texture_optimization.h"
+#include "texsynth/surface/surface_neighborhoods.h"
+#include "texsynth/surface/tangent_field.h"
+
+namespace texsynth {
+
+// How the texture is oriented on the surface: a tangent direction field gives the exemplar's up
+// direction (its -y) at every vertex: the tangent projection of `field` when given (the rotation
+// field `texsynth field` designs from a sketch, its local x axis), else a smooth field following
+// `smooth.guide` (world +Y by default: the exemplar stands upright on the model, its rows
+// horizontal).
+struct SurfaceOrientation {
+  const RotationField* field = nullptr;
+  TangentFieldOptions smooth;
+};
+
+struct PreparedSurfaceLevel {
+  MeshTopology topology;
+  std::vector<Vec3f> tangents;  // unit, per vertex: the exemplar's +x direction (up x normal)
+  // One per neighborhood size, in the order of the sizes prepareSurface was given; active
+  // centres activeStride(N) cells apart.
+  std::vector<SurfaceNeighborhoods> neighborhoods;
+};
+
+struct PreparedSurface {
+  MeshHierarchy hierarchy;
+  std::vector<PreparedSurfaceLevel> levels;  // as hierarchy.levels, coarsest first
+  std::vector<int> neighborhoodSizes;
+  double seconds = 0;  // orientation and resampling (the hierarchy reports its own time)
+
+  const Mesh& finestMesh() const { return hierarchy.levels.back().mesh; }
+};
+
+// Orients every level and precomputes W_p for each neighborhood size. Progress: one stage,
+// one unit per level. Throws ParameterError("neighborhood", ...) for an even or out-of-range
+// size, InputError("mesh", ...) for a level the topology rejects.
+PreparedSurface prepareSurface(MeshHierarchy hierarchy, const SurfaceOrientation& orientation,
+                               std::span<const int> neighborhoodSizes, Progress& progress = noProgress());
+
+struct SurfaceSynthesisResult {
+  // Per vertex of the finest level: the exemplar pixel (y * exemplar width + x) it copies.
+  std::vector<std::int32_t> sources;
+  // Per vertex: the exemplar's color there (RGB in [0, 1]; gray exemplars repeat their channel).
+  std::vector<Vec3f> colors;
+  std::vector<OptimizationIteration> history;  // one entry per M-step, as 2D optimize reports
+  int firstLevel = 0;                          // the coarsest level synthesized (see below)
+  double seconds = 0;                          // wall time of the synthesis
+};
+
+// Synthesizes on a prepared surface. `analyses` are optimizationAnalysisOptions(options) on one
+// exemplar, whose levels must equal the hierarchy's; options.solver must be Discrete (the
+// least-squares solver keeps no sources) and options.neighborhoodSizes the prepared ones. As
+// in 2D, levels whose largest neighborhood does not fit inside the exemplar are skipped (there a
+// tiled copy of it is a zero-energy optimum): synthesis then starts at a finer level.
+// Progress: one stage per level. Throws ParameterError for options or analyses that do not fit.
+SurfaceSynthesisResult synthesizeSurface(std::span<const ExemplarAnalysis> analyses, const PreparedSurface& surface,
+                                         const TextureOptimizationOptions& options, Progress& progress = noProgress());
+
+// RGB colors of exemplar pixels `sources` in `image` (any channel count; gray is repeated, a
+// fourth channel dropped): the synthesized colors, or another map of the same material through
+// the same sources. Throws ParameterError("sources", ...) for a source outside the image.
+std::vector<Vec3f> colorsOfSources(const Image& image, std::span<const std::int32_t> sources);
+
+}  // namespace texsynth

@@ -1,0 +1,198 @@
+// Surface quality: a coherent copy of the exemplar on a flat retiled plane scores near 0, random
+// exemplar pixels score high, a turned copy is coherent only rotation-invariantly, borders are
+// left out, thread count does not matter, bad input is rejected.
+#include "texsynth/surface/surface_quality.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "test_support.h"
+#include "texsynth/core/error.h"
+#include "texsynth/core/parallel.h"
+#include "texsynth/core/random.h"
+#include "texsynth/geometry/mesh_retiling.h"
+
+using namespace texsynth;
+
+namespace {
+
+// A smooth RGB texture with detail at a few pixels' scale (bilinear lookups reproduce it well).
+Image smoothTexture(int size) {
+  Image image(size, size, 3);
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x) {
+      const float fx = float(x), fy = float(y);
+      image.at(x, y, 0) = 0.5f + 0.3f * std::sin(0.3f * fx + 1.5f * std::sin(0.11f * fy));
+      image.at(x, y, 1) = 0.5f + 0.25f * std::sin(0.21f * fy + 1.2f * std::cos(0.09f * fx));
+      image.at(x, y, 2) = 0.5f + 0.2f * std::sin(0.17f * (fx + fy)) * std::cos(0.13f * (fx - fy));
+    }
+  return image;
+}
+
+// The square [0, side]^2 in z = 0, retiled to about `vertices` near-uniform vertices.
+Mesh retiledPlane(float side, int vertices) {
+  Mesh grid;
+  const int n = 8;
+  for (int y = 0; y <= n; ++y)
+    for (int x = 0; x <= n; ++x) grid.positions.push_back({side * float(x) / n, side * float(y) / n, 0});
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      const int v = y * (n + 1) + x;
+      grid.triangles.push_back({v, v + 1, v + n + 2});
+      grid.triangles.push_back({v, v + n + 2, v + n + 1});
+    }
+  RetileOptions options;
+  options.targetVertices = vertices;
+  return retileMesh(grid, options, "plane");
+}
+
+double spacingOf(const Mesh& mesh) {
+  return std::sqrt(mesh.surfaceArea() / double(mesh.vertexCount()));
+}
+
+// Colors every vertex by a bilinear lookup of `exemplar` at its planar position, one pixel per
+// spacing, exemplar x along +x and exemplar y (down) along -y (the layout of tangent +x), from
+// pixel (x0, y0) at the origin; `turned` swaps the exemplar's axes (a quarter turn and a mirror).
+void colorCoherently(Mesh& mesh, const Image& exemplar, double x0, double y0, bool turned = false) {
+  const double s = spacingOf(mesh);
+  mesh.colors.clear();
+  for (const Vec3f& p : mesh.positions) {
+    double u = x0 + p.x() / s, v = y0 - p.y() / s;
+    if (turned) std::swap(u, v);
+    float rgb[3];
+    exemplar.sampleBilinearWrapped(u, v, rgb);
+    mesh.colors.push_back({rgb[0], rgb[1], rgb[2]});
+  }
+}
+
+void colorRandomly(Mesh& mesh, const Image& exemplar) {
+  mesh.colors.clear();
+  for (std::size_t v = 0; v < mesh.vertexCount(); ++v) {
+    const int x = int(uniformBelow(hashKey(9, v, 0), std::uint32_t(exemplar.width)));
+    const int y = int(uniformBelow(hashKey(9, v, 1), std::uint32_t(exemplar.height)));
+    mesh.colors.push_back({exemplar.at(x, y, 0), exemplar.at(x, y, 1), exemplar.at(x, y, 2)});
+  }
+}
+
+std::vector<Vec3f> alongX(const Mesh& mesh) {
+  return std::vector<Vec3f>(mesh.vertexCount(), Vec3f::UnitX());
+}
+
+class SurfaceQualityTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    plane_ = new Mesh(retiledPlane(40.0f, 1600));
+    exemplar_ = new Image(smoothTexture(64));
+  }
+  static void TearDownTestSuite() {
+    delete plane_;
+    delete exemplar_;
+  }
+  static Mesh* plane_;
+  static Image* exemplar_;
+};
+Mesh* SurfaceQualityTest::plane_ = nullptr;
+Image* SurfaceQualityTest::exemplar_ = nullptr;
+
+TEST_F(SurfaceQualityTest, CoherentCopyScoresNearZeroRandomPixelsHigh) {
+  Mesh coherent = *plane_, random = *plane_;
+  colorCoherently(coherent, *exemplar_, 12, 52);
+  colorRandomly(random, *exemplar_);
+  const SurfaceQuality good = evaluateSurface(*exemplar_, coherent, alongX(coherent));
+  const SurfaceQuality bad = evaluateSurface(*exemplar_, random, alongX(random));
+  // Not 0: vertices sit at sub-pixel offsets from the exemplar's pixel grid (3.3 here).
+  EXPECT_LT(good.coherence, 5.0);
+  EXPECT_GT(bad.coherence, 8 * good.coherence);  // 39
+  EXPECT_LE(good.rotationInvariant, good.coherence);
+  EXPECT_LE(bad.rotationInvariant, bad.coherence);
+  EXPECT_GT(bad.rotationInvariant, 5 * good.coherence);
+  // The plane has a border: its outer strip is left out, the rest sampled.
+  EXPECT_GT(good.nearBorder, 0);
+  EXPECT_EQ(good.evaluated + good.nearBorder, int(coherent.vertexCount()));
+  EXPECT_NEAR(good.spacing, spacingOf(coherent), 1e-9);
+  EXPECT_LT(good.histogram, 8.0);  // a window of the exemplar: a similar distribution
+}
+
+TEST_F(SurfaceQualityTest, TurnedCopyIsCoherentOnlyRotationInvariantly) {
+  Mesh turned = *plane_, straight = *plane_;
+  colorCoherently(turned, *exemplar_, 12, 52, true);
+  colorCoherently(straight, *exemplar_, 12, 52);
+  const SurfaceQuality q = evaluateSurface(*exemplar_, turned, alongX(turned));
+  const SurfaceQuality reference = evaluateSurface(*exemplar_, straight, alongX(straight));
+  EXPECT_GT(q.coherence, 4 * q.rotationInvariant);
+  EXPECT_LT(q.rotationInvariant, 1.5 * reference.coherence + 0.5);
+  // Tangents along the texture's turned x axis (+y: exemplar y runs along -x there, a mirror) do
+  // not help the plain measure of a transposed copy; the invariant one stays the same.
+  const std::vector<Vec3f> alongY(turned.vertexCount(), Vec3f::UnitY());
+  const SurfaceQuality turnedTangents = evaluateSurface(*exemplar_, turned, alongY);
+  EXPECT_GT(turnedTangents.coherence, 4 * turnedTangents.rotationInvariant);
+  EXPECT_NEAR(turnedTangents.rotationInvariant, q.rotationInvariant, 0.5);
+}
+
+TEST_F(SurfaceQualityTest, BordersAreLeftOutUnlessAsked) {
+  Mesh coherent = *plane_;
+  colorCoherently(coherent, *exemplar_, 12, 52);
+  SurfaceQualityOptions options;
+  options.samples = 0;
+  const SurfaceQuality inside = evaluateSurface(*exemplar_, coherent, alongX(coherent), options);
+  options.skipBorders = false;
+  const SurfaceQuality everywhere = evaluateSurface(*exemplar_, coherent, alongX(coherent), options);
+  EXPECT_EQ(everywhere.evaluated, int(coherent.vertexCount()));
+  EXPECT_EQ(everywhere.nearBorder, 0);
+  EXPECT_GT(everywhere.coherence, inside.coherence);  // clamp-to-edge patches are no texture
+}
+
+TEST_F(SurfaceQualityTest, SameResultForAnyThreadCountAndSeededSample) {
+  Mesh random = *plane_;
+  colorRandomly(random, *exemplar_);
+  SurfaceQualityOptions options;
+  options.samples = 500;
+  SurfaceQuality one, two;
+  {
+    ThreadLimit limit(1);
+    one = evaluateSurface(*exemplar_, random, alongX(random), options);
+  }
+  {
+    ThreadLimit limit(2);
+    two = evaluateSurface(*exemplar_, random, alongX(random), options);
+  }
+  EXPECT_EQ(one.evaluated, 500);
+  EXPECT_EQ(one.coherence, two.coherence);
+  EXPECT_EQ(one.rotationInvariant, two.rotationInvariant);
+  EXPECT_EQ(one.histogram, two.histogram);
+  options.seed = 2;  // another sample: close, but not the same vertices
+  const SurfaceQuality other = evaluateSurface(*exemplar_, random, alongX(random), options);
+  EXPECT_NE(other.coherence, one.coherence);
+  EXPECT_NEAR(other.coherence, one.coherence, 0.1 * one.coherence);
+}
+
+TEST_F(SurfaceQualityTest, RejectsBadInput) {
+  Mesh mesh = *plane_;
+  const std::vector<Vec3f> tangents = alongX(mesh);
+  test::expectInputError([&] { evaluateSurface(*exemplar_, mesh, tangents); }, "mesh", "no vertex colors");
+  colorRandomly(mesh, *exemplar_);
+  SurfaceQualityOptions options;
+  options.patchSize = 6;
+  test::expectParameterError([&] { evaluateSurface(*exemplar_, mesh, tangents, options); }, "patchSize");
+  options.patchSize = 1;
+  test::expectParameterError([&] { evaluateSurface(*exemplar_, mesh, tangents, options); }, "patchSize");
+  options = {};
+  options.samples = -1;
+  test::expectParameterError([&] { evaluateSurface(*exemplar_, mesh, tangents, options); }, "samples");
+  test::expectParameterError([&] { evaluateSurface(*exemplar_, mesh, std::span(tangents).subspan(1)); }, "tangents");
+  test::expectParameterError([&] { evaluateSurface(Image(5, 5, 3), mesh, tangents); }, "exemplar");
+  test::expectParameterError([&] { evaluateSurface(Image(), mesh, tangents); }, "exemplar");
+  Mesh nan = mesh;
+  nan.colors[7].x() = std::nanf("");
+  test::expectInputError([&] { evaluateSurface(*exemplar_, nan, tangents); }, "mesh", "non-finite");
+  Mesh short_ = mesh;
+  short_.colors.pop_back();
+  test::expectInputError([&] { evaluateSurface(*exemplar_, short_, tangents); }, "mesh", "colors");
+  // A strip narrower than a patch: no vertex is clear of the border.
+  Mesh strip = retiledPlane(4.0f, 100);
+  colorRandomly(strip, *exemplar_);
+  test::expectInputError([&] { evaluateSurface(*exemplar_, strip, alongX(strip)); }, "mesh", "border");
+}
+
+}  // namespace

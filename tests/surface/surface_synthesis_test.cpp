@@ -1,0 +1,129 @@
+// Surface synthesis end to end on a small closed mesh (hierarchy, preparation, synthesis): every
+// vertex gets a valid source, the plain discrete energy never rises within a level and
+// neighborhood size, the result does not depend on the thread count, colorsOfSources checks its
+// sources.
+#include "texsynth/surface/surface_synthesis.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "test_support.h"
+#include "texsynth/core/error.h"
+#include "texsynth/core/mesh_weld.h"
+#include "texsynth/core/parallel.h"
+#include "texsynth/exemplar/analysis.h"
+#include "texsynth/render/primitives.h"
+
+using namespace texsynth;
+
+namespace {
+
+constexpr int kExemplarSide = 48;
+
+// Small settings: two levels of a 2000-vertex cube, neighborhoods 9 then 5.
+TextureOptimizationOptions smallOptions() {
+  TextureOptimizationOptions options;
+  options.levels = 2;
+  options.neighborhoodSizes = {9, 5};
+  options.maxIterations = 3;
+  return options;
+}
+
+struct Fixture {
+  Image exemplar = test::makeTestPattern(kExemplarSide, kExemplarSide);
+  std::vector<ExemplarAnalysis> analyses;
+  PreparedSurface surface;
+
+  Fixture() {
+    const TextureOptimizationOptions options = smallOptions();
+    for (const AnalysisOptions& analysisOptions : optimizationAnalysisOptions(options))
+      analyses.push_back(analyzeExemplar(exemplar, analysisOptions));
+    // The box's faces keep their own vertices: welded, it is one closed surface.
+    const Mesh cube = weldCoincidentVertices(makeBoxMesh(Vec3f::Zero(), Vec3f::Ones())).mesh;
+    MeshHierarchyOptions hierarchyOptions;
+    hierarchyOptions.vertices = 2000;
+    hierarchyOptions.levels = options.levels;
+    surface = prepareSurface(buildMeshHierarchy(cube, hierarchyOptions, "cube"), {}, options.neighborhoodSizes);
+  }
+  SurfaceSynthesisResult run(const TextureOptimizationOptions& options) const {
+    return synthesizeSurface(analyses, surface, options);
+  }
+};
+
+const Fixture& fixture() {
+  static const Fixture instance;
+  return instance;
+}
+
+TEST(SurfaceSynthesis, EveryVertexGetsAValidSourceAndItsColor) {
+  const Fixture& f = fixture();
+  const SurfaceSynthesisResult result = f.run(smallOptions());
+  const std::size_t vertices = f.surface.finestMesh().vertexCount();
+  ASSERT_EQ(result.sources.size(), vertices);
+  ASSERT_EQ(result.colors.size(), vertices);
+  for (std::int32_t source : result.sources) {
+    ASSERT_GE(source, 0);
+    ASSERT_LT(source, kExemplarSide * kExemplarSide);
+  }
+  EXPECT_EQ(colorsOfSources(f.exemplar, result.sources), result.colors);
+  // A synthesis, not one pixel copied everywhere.
+  std::vector<std::int32_t> distinct = result.sources;
+  std::sort(distinct.begin(), distinct.end());
+  distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+  EXPECT_GT(distinct.size(), vertices / 10);
+  EXPECT_FALSE(result.history.empty());
+}
+
+TEST(SurfaceSynthesis, PlainDiscreteEnergyNeverRisesWithinALevelAndSize) {
+  TextureOptimizationOptions plain = smallOptions();
+  plain.coverageWeight = 0, plain.voteExponent = 0, plain.randomCandidates = 0;  // Han et al.'s energy
+  const SurfaceSynthesisResult result = fixture().run(plain);
+  ASSERT_GT(result.history.size(), 1u);
+  int lowered = 0;
+  for (std::size_t i = 1; i < result.history.size(); ++i) {
+    const OptimizationIteration &before = result.history[i - 1], &after = result.history[i];
+    if (after.iteration == 0) continue;  // a new level or neighborhood size starts over
+    ASSERT_EQ(after.level, before.level);
+    ASSERT_EQ(after.neighborhoodSize, before.neighborhoodSize);
+    EXPECT_LE(after.energy, before.energy * (1 + 1e-6))
+        << "level " << after.level << " N " << after.neighborhoodSize << " iteration " << after.iteration;
+    lowered += after.energy < before.energy;
+  }
+  EXPECT_GT(lowered, 0) << "the iterations never lowered the energy";
+}
+
+TEST(SurfaceSynthesis, SameSeedSameSourcesForAnyThreadCount) {
+  const Fixture& f = fixture();
+  std::vector<std::int32_t> one, three;
+  {
+    ThreadLimit limit(1);
+    one = f.run(smallOptions()).sources;
+  }
+  {
+    ThreadLimit limit(3);
+    three = f.run(smallOptions()).sources;
+  }
+  EXPECT_EQ(one, three);
+  TextureOptimizationOptions other = smallOptions();
+  other.seed = 9;
+  EXPECT_NE(f.run(other).sources, one);
+}
+
+TEST(SurfaceSynthesis, ColorsOfSourcesChecksItsSourcesAndChannels) {
+  Image gray(4, 2, 1);
+  for (std::size_t i = 0; i < gray.pixels.size(); ++i) gray.pixels[i] = float(i) / 8.0f;
+  const std::vector<std::int32_t> sources = {0, 7, 5};
+  const std::vector<Vec3f> colors = colorsOfSources(gray, sources);
+  ASSERT_EQ(colors.size(), 3u);
+  EXPECT_EQ(colors[1], Vec3f::Constant(7.0f / 8.0f));  // gray repeated
+  Image rgba(4, 2, 4, 0.25f);
+  EXPECT_EQ(colorsOfSources(rgba, sources)[2], Vec3f::Constant(0.25f));  // alpha dropped
+  EXPECT_TRUE(colorsOfSources(gray, {}).empty());
+  for (std::int32_t bad : {-1, 8, 1 << 30}) {
+    const std::vector<std::int32_t> outside = {0, bad};
+    test::expectParameterError([&] { colorsOfSources(gray, outside); }, "sources");
+  }
+}
+
+}  // namespace
