@@ -22,7 +22,7 @@ struct ByteWriter {
   template <typename T>
   void array(const std::vector<T>& values) {
     value(std::uint64_t(values.size()));
-    bytes.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
+    if (!values.empty()) bytes.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
   }
 };
 
@@ -56,6 +56,7 @@ class ByteReader {
     std::string_view data;
     if (!raw(count * sizeof(T), data)) return false;
     values.resize(count);
+    if (count == 0) return true;  // an empty vector's data() may be null, which memcpy must not get
     std::memcpy(static_cast<void*>(values.data()), data.data(), data.size());  // also fixed-size Eigen vectors
     return true;
   }
