@@ -14,6 +14,7 @@
 #include "texsynth/core/error.h"
 #include "texsynth/core/memory_budget.h"
 #include "texsynth/core/mesh_weld.h"
+#include "texsynth/core/timing.h"
 #include "texsynth/exemplar/analysis_cache.h"
 #include "texsynth/exemplar/gaussian_stack.h"
 #include "texsynth/field/field_designer.h"
@@ -137,7 +138,7 @@ void finish(const SurfaceArgs& args, const GlobalOptions& globals, json& report,
             Progress& progress, const std::string& summary) {
   auto start = std::chrono::steady_clock::now();
   report["outputs"] = writeSurfaceOutputs(args, result, progress);
-  report["outputs_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  report["outputs_seconds"] = secondsSince(start);
   takePeakResidentMiB();
   report["peak_rss_mib"] = processPeakResidentMiB();
   std::string files;
@@ -158,7 +159,7 @@ void runApplyCoords(const SurfaceArgs& args, const GlobalOptions& globals) {
                  {"exemplar_size", {exemplar.width, exemplar.height}},
                  {"apply_coords", args.applyCoords},
                  {"vertices", {result.colored.vertexCount()}}};
-  report["lookup_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  report["lookup_seconds"] = secondsSince(start);
   auto progress = makeProgress(globals);
   finish(args, globals, report, result, *progress,
          "applied " + args.applyCoords + " to " + std::to_string(result.colored.vertexCount()) + " vertices");
@@ -256,10 +257,9 @@ void runSurface(const CLI::App& parser, const SurfaceArgs& args, const GlobalOpt
   report["first_level"] = synthesis.firstLevel;
   report["steps"] = historyJson(synthesis.history);
   const std::string summary = "synthesized " + std::to_string(result.colored.vertexCount()) + " vertices in " +
-                              seconds(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()) +
-                              " (hierarchy " + seconds(report["hierarchy_seconds"].get<double>()) +
-                              (cached ? ", cached" : "") + "; synthesis " +
-                              seconds(report["synthesis_seconds"].get<double>()) + ")";
+                              seconds(secondsSince(start)) + " (hierarchy " +
+                              seconds(report["hierarchy_seconds"].get<double>()) + (cached ? ", cached" : "") +
+                              "; synthesis " + seconds(report["synthesis_seconds"].get<double>()) + ")";
   finish(args, globals, report, result, *progress, summary);
 }
 

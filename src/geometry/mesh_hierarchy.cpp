@@ -6,6 +6,7 @@
 
 #include "texsynth/core/error.h"
 #include "texsynth/core/parallel.h"
+#include "texsynth/core/timing.h"
 #include "texsynth/geometry/mesh_retiling.h"
 #include "texsynth/geometry/mesh_topology.h"
 #include "texsynth/geometry/surface_projector.h"
@@ -77,7 +78,7 @@ MeshHierarchy buildMeshHierarchy(const Mesh& input, const MeshHierarchyOptions& 
     progress.advance();
   }
   progress.end();
-  hierarchy.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  hierarchy.seconds = secondsSince(start);
   return hierarchy;
 }
 

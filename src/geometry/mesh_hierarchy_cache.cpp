@@ -8,6 +8,7 @@
 #include "texsynth/core/byte_stream.h"
 #include "texsynth/core/cache_file.h"
 #include "texsynth/core/hash.h"
+#include "texsynth/core/timing.h"
 #include "texsynth/geometry/mesh_retiling.h"
 
 namespace texsynth {
@@ -101,7 +102,7 @@ MeshHierarchy buildMeshHierarchyCached(const Mesh& input, const MeshHierarchyOpt
   progress.advance();
   progress.end();
   if (cached && int(cached->levels.size()) == options.levels) {
-    cached->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    cached->seconds = secondsSince(start);
     return std::move(*cached);
   }
 

@@ -36,6 +36,7 @@
 #include "texsynth/core/parallel.h"
 #include "texsynth/core/progress.h"
 #include "texsynth/core/random.h"
+#include "texsynth/core/timing.h"
 #include "texsynth/exemplar/analysis.h"
 #include "texsynth/image/exemplar_usage.h"
 #include "texsynth/image/exemplar_window.h"
@@ -278,17 +279,16 @@ template <class Match, class Update, class Record>
 void iterateExpectationMaximization(int maxIterations, Match&& match, Update&& update, Record&& record,
                                     Progress& progress) {
   using Clock = std::chrono::steady_clock;
-  auto since = [](Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); };
   Clock::time_point start = Clock::now();
   const std::int64_t first = match();
-  record(0, first, since(start));
+  record(0, first, secondsSince(start));
   progress.advance(1);
   int iteration = 1;
   for (; iteration <= maxIterations; ++iteration) {
     start = Clock::now();
     update();
     const std::int64_t changed = match();
-    record(iteration, changed, since(start));
+    record(iteration, changed, secondsSince(start));
     progress.advance(1);
     if (changed == 0) break;
   }
