@@ -94,10 +94,7 @@ Mesh toMesh(const SurfaceMesh& surface) {
     TS_CHECK_MSG(k == 3, "isotropic remeshing left a face with " + std::to_string(k) + " vertices");
     // A sliver CGAL keeps can lose all its area in float coordinates (seen at a UV sphere's
     // pole): it carries no texture, and MeshTopology would reject it, so it is left out.
-    const Eigen::Vector3d a = mesh.positions[std::size_t(triangle[0])].cast<double>();
-    const Eigen::Vector3d ab = mesh.positions[std::size_t(triangle[1])].cast<double>() - a;
-    const Eigen::Vector3d ac = mesh.positions[std::size_t(triangle[2])].cast<double>() - a;
-    if (ab.cross(ac).squaredNorm() == 0) continue;
+    if (faceHasZeroArea(mesh.positions, triangle)) continue;
     mesh.triangles.push_back(triangle);
   }
   mesh.computeNormals();

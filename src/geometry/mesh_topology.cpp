@@ -19,10 +19,7 @@ void checkFaces(const Mesh& mesh, const std::string& source) {
     const Vec3i& f = mesh.triangles[t];
     if (f[0] == f[1] || f[1] == f[2] || f[2] == f[0])
       throw InputError(source, "face " + std::to_string(t) + " is degenerate (it repeats a vertex)");
-    const Eigen::Vector3d a = mesh.positions[std::size_t(f[0])].cast<double>();
-    const Eigen::Vector3d ab = mesh.positions[std::size_t(f[1])].cast<double>() - a;
-    const Eigen::Vector3d ac = mesh.positions[std::size_t(f[2])].cast<double>() - a;
-    if (ab.cross(ac).squaredNorm() == 0)
+    if (faceHasZeroArea(mesh.positions, f))
       throw InputError(source, "face " + std::to_string(t) + " is degenerate (zero area)");
   }
 }
@@ -167,6 +164,13 @@ std::span<const int> MeshTopology::fan(int v, int k) const {
   const int begin = fanStarts_[std::size_t(index)];
   const int end = k + 1 < fanCount(v) ? fanStarts_[std::size_t(index) + 1] : ringOffsets_[std::size_t(v) + 1];
   return {ring_.data() + begin, std::size_t(end - begin)};
+}
+
+bool faceHasZeroArea(const std::vector<Vec3f>& positions, const Vec3i& face) {
+  const Eigen::Vector3d a = positions[std::size_t(face[0])].cast<double>();
+  const Eigen::Vector3d ab = positions[std::size_t(face[1])].cast<double>() - a;
+  const Eigen::Vector3d ac = positions[std::size_t(face[2])].cast<double>() - a;
+  return ab.cross(ac).squaredNorm() == 0;
 }
 
 }  // namespace texsynth

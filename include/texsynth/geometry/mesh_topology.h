@@ -64,4 +64,8 @@ class MeshTopology {
   int borderEdges_ = 0;
 };
 
+// Whether `face` (indices into `positions`) spans no area (its cross product, in double, is 0):
+// the test MeshTopology rejects degenerate faces with.
+bool faceHasZeroArea(const std::vector<Vec3f>& positions, const Vec3i& face);
+
 }  // namespace texsynth
