@@ -16,6 +16,8 @@ PACKAGES=(
   # benchmarks: /usr/bin/time (bench/gradient_synthesis.sh), python3 (reads eval's JSON in
   # bench/synthesis_comparison.sh)
   time python3
+  # flow animation videos and GIFs (texsynth animate)
+  ffmpeg
 )
 PACKAGES+=("$@")
 

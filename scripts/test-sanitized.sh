@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
-# The fast test suites (core, io, field, render, gradient; eval takes minutes at -O0) built with the `debug` preset: address and
+# The fast test suites (core, io, geometry, field, render, gradient, surface, animation; eval takes minutes at
+# -O0) built with the `debug` preset: address and
 # undefined-behaviour sanitizers, warnings as errors. Any sanitizer report fails the run.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 bash scripts/install-deps.sh
 cmake --preset debug -DTEXSYNTH_WERROR=ON -DTEXSYNTH_BUILD_BENCH=OFF >/dev/null
-suites=(core io geometry field render gradient surface)
+suites=(core io geometry field render gradient surface animation)
 cmake --build build-debug -j "$(nproc)" --target "${suites[@]/#/test_}"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
 label_regex="^($(IFS='|'; echo "${suites[*]}"))\$"

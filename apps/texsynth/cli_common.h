@@ -113,5 +113,6 @@ Command registerFieldCommand(CLI::App& app, const GlobalOptions& globals);
 Command registerVectorizeCommand(CLI::App& app, const GlobalOptions& globals);
 Command registerEditCommand(CLI::App& app, const GlobalOptions& globals);
 Command registerSurfaceCommand(CLI::App& app, const GlobalOptions& globals);
+Command registerAnimateCommand(CLI::App& app, const GlobalOptions& globals);
 
 }  // namespace texsynth::cli

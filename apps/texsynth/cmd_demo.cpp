@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "cli_common.h"
+#include "demo_animation.h"
 #include "demo_fallbacks.h"
 #include "demo_gradient.h"
 #include "demo_pixel.h"
@@ -112,6 +113,7 @@ std::string markdownReport(const json& r) {
      << "normal), evaluated at every pixel: " << fixed3(r["mesh"]["solid_render_seconds"]) << " s.\n\n";
   md << pixelMarkdown(r["pixel"], r["tiling_baseline"]);
   md << surfaceMarkdown(r["surface"]);
+  md << animationMarkdown(r["animation"]);
   md << gradientMarkdown(r["gradient"]);
   return md.str();
 }
@@ -224,6 +226,12 @@ void runDemo(const DemoArgs& args, const GlobalOptions& globals) {
   progress->advance(1);
   progress->end();
 
+  progress->begin("flow animation", 1);
+  report["animation"] =
+      demoAnimation(exemplar, exemplarFallback ? "procedural marble" : exemplarPath, globals.seed, cacheDir, out);
+  progress->advance(1);
+  progress->end();
+
   progress->begin("gradient solids", 1);
   report["gradient"] = demoGradientSolids(exemplar, globals.seed, cacheDir, out);
   progress->advance(1);
@@ -234,7 +242,7 @@ void runDemo(const DemoArgs& args, const GlobalOptions& globals) {
   if (globals.json) printJson(report);
   say(globals, "wrote " + out("report.md") +
                    " with exemplar.png, gaussian_stack.png, mesh.png, mesh_solid.png, pixel_synthesis.png, "
-                   "surface_synthesis.png, "
+                   "surface_synthesis.png, animation_frames.png, animation_lambdas.png, animation.gif, "
                    "gradient_magnified.png, "
                    "gradient_edit.png, gradient_synthesized.png and gradient_solid.tsgs");
 }
@@ -246,7 +254,7 @@ Command registerDemoCommand(CLI::App& app, const GlobalOptions& globals) {
       app.add_subcommand("demo",
                          "A tour on built-in defaults: analyse a real exemplar (GIMP's pink marble), render a real "
                          "mesh (CGAL's bunny) plain and solid-textured, synthesize and score 2D textures, grow a "
-                         "texture on the mesh's surface, vectorize "
+                         "texture on the mesh's surface, animate a texture along a flow, vectorize "
                          "and edit a small gradient solid, and write a "
                          "report with pictures into DIR");
   auto args = std::make_shared<DemoArgs>();

@@ -11,6 +11,7 @@
 #include "solid_args.h"
 #include "texsynth/core/atomic_file.h"
 #include "texsynth/core/memory_budget.h"
+#include "texsynth/core/timing.h"
 #include "texsynth/geometry/mesh_cut.h"
 #include "texsynth/geometry/surface_voxels.h"
 #include "texsynth/gradient/gradient_solid_file.h"
@@ -289,13 +290,8 @@ void runSolid(const CLI::App& parser, SolidArgs& args, const GlobalOptions& glob
   std::optional<std::pair<int, float>> cut;  // parsed before any work, so a typo costs nothing
   if (!args.cut.empty()) cut = parseAxisPosition(args.cut, "--cut", true);
   json report = {{"exemplar", args.exemplars}, {"method", args.method}, {"seed", globals.seed}};
-  auto clock = std::chrono::steady_clock::now();
-  auto lap = [&clock] {
-    auto now = std::chrono::steady_clock::now();
-    double s = std::chrono::duration<double>(now - clock).count();
-    clock = now;
-    return s;
-  };
+  LapTimer timer;
+  auto lap = [&timer] { return timer.lap(); };
 
   Mesh mesh;
   Box3f box;

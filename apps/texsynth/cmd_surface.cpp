@@ -1,26 +1,17 @@
 // texsynth surface EXEMPLAR --mesh M -o out.ply|.glb: texture grown directly on a mesh's surface
 // by discrete optimization (surface synthesis, Han et al.), as vertex colors of a retiled copy;
 // or, with --apply-coords, another map of the same material through a stored synthesis.
-#include <charconv>
 #include <chrono>
-#include <cmath>
-#include <filesystem>
 
 #include "cli_common.h"
 #include "mode_flags.h"
 #include "number_checks.h"
 #include "surface_args.h"
+#include "surface_setup.h"
 #include "texsynth/core/atomic_file.h"
 #include "texsynth/core/error.h"
 #include "texsynth/core/memory_budget.h"
-#include "texsynth/core/mesh_weld.h"
 #include "texsynth/core/timing.h"
-#include "texsynth/exemplar/analysis_cache.h"
-#include "texsynth/exemplar/gaussian_stack.h"
-#include "texsynth/field/field_designer.h"
-#include "texsynth/field/field_io.h"
-#include "texsynth/field/sketch.h"
-#include "texsynth/geometry/mesh_hierarchy_cache.h"
 #include "texsynth/io/file_kind.h"
 #include "texsynth/io/image_io.h"
 #include "texsynth/io/mesh_io.h"
@@ -40,34 +31,6 @@ const std::vector<ModeFlag> kSurfaceModeFlags = {
     {"--up", {"synthesis"}},         {"--coords", {"synthesis"}},   {"--bake", {"synthesis"}},
     {"--bake-size", {"synthesis"}},
 };
-
-// Peak memory of a synthesis, measured with `/usr/bin/time -f %M` on the bunny (brick.pat, 2 threads):
-// 210 MB at 48k vertices, 490 MB at 200k (retiling, neighborhoods of both sizes on every level,
-// the solver's state); this rounds the slope and the base up.
-constexpr double kBaseBytes = 64.0 * 1024 * 1024, kBytesPerVertex = 4096.0;
-
-// "X,Y,Z": three finite numbers, not all zero (only the direction matters).
-Vec3f parseDirection(const std::string& text, const std::string& flag) {
-  Vec3f direction;
-  std::size_t start = 0;
-  for (int axis = 0; axis < 3; ++axis) {
-    const std::size_t comma = axis < 2 ? text.find(',', start) : text.size();
-    float value = 0;
-    if (start < text.size() && text[start] == '+') ++start;  // from_chars takes no plus sign
-    const char* end = text.data() + std::min(comma, text.size());
-    bool parsed = comma != std::string::npos && comma > start;
-    if (parsed) {
-      const auto result = std::from_chars(text.data() + start, end, value);
-      parsed = result.ec == std::errc() && result.ptr == end;
-    }
-    if (!parsed || !std::isfinite(value) || (axis == 2 && text.find(',', start) != std::string::npos))
-      throw ParameterError(flag, "'" + text + "': give a direction as three finite numbers X,Y,Z (e.g. 0,1,0)");
-    direction[axis] = value;
-    start = comma + 1;
-  }
-  if (!(direction.norm() > 0)) throw ParameterError(flag, "'" + text + "': the direction must not be zero");
-  return direction;
-}
 
 // Every usage check, before any file is read.
 void checkUsage(const CLI::App& parser, const SurfaceArgs& args) {
@@ -99,33 +62,8 @@ void checkUsage(const CLI::App& parser, const SurfaceArgs& args) {
   if (args.outputs.empty() && args.render.empty() && args.coords.empty() && args.bake.empty())
     throw ParameterError("--output", "nothing to write: give -o (mesh), --render, --bake or --coords");
   if (!apply)
-    requireMemory(kBaseBytes + double(args.vertices) * kBytesPerVertex, "--vertices",
-                  std::to_string(args.vertices) + " vertices");
+    requireMemory(surfaceSynthesisBytes(args.vertices), "--vertices", std::to_string(args.vertices) + " vertices");
   requireSurfaceOutputMemory(args);
-}
-
-// The mesh side's errors name the mesh file, not the library's "mesh".
-template <typename Work>
-auto namingMesh(const std::string& path, Work work) {
-  try {
-    return work();
-  } catch (const InputError& e) {
-    if (e.file() == "mesh") throw InputError(path, e.problem());
-    throw;
-  }
-}
-
-json historyJson(const std::vector<OptimizationIteration>& history) {
-  json steps = json::array();
-  for (const OptimizationIteration& h : history)
-    steps.push_back({{"level", h.level},
-                     {"neighborhood", h.neighborhoodSize},
-                     {"iteration", h.iteration},
-                     {"energy", h.energy},
-                     {"changed", h.changedMatches},
-                     {"neighborhoods", h.neighborhoods},
-                     {"seconds", h.seconds}});
-  return steps;
 }
 
 std::string seconds(double s) {
@@ -169,74 +107,19 @@ void runSurface(const CLI::App& parser, const SurfaceArgs& args, const GlobalOpt
   checkUsage(parser, args);
   if (!args.applyCoords.empty()) return runApplyCoords(args, globals);
   const auto start = std::chrono::steady_clock::now();
-  auto clock = start;
-  auto lap = [&clock] {
-    const auto now = std::chrono::steady_clock::now();
-    const double s = std::chrono::duration<double>(now - clock).count();
-    clock = now;
-    return s;
-  };
-
-  const Image exemplar = readImage(args.exemplar);
-  const Mesh input = readMesh(args.mesh);
-  if (!args.bake.empty() && !input.attributes.count(kUvAttribute))
-    throw ParameterError("--bake", "'" + args.mesh +
-                                       "' has no texture coordinates (UVs) to bake into; give a mesh with them "
-                                       "(OBJ vt, PLY s,t or u,v) or drop --bake");
-  // UV and normal seams store a vertex once per side; synthesis must see one surface across them.
-  const WeldedMesh welded = weldCoincidentVertices(input);
-  if (welded.mesh.triangles.empty()) throw InputError(args.mesh, "every face has coinciding corners (zero area)");
-
-  TextureOptimizationOptions options;
-  options.seed = globals.seed;
-  // Without --levels, a small exemplar gets the levels its Gaussian stack has (as `image --method optimize`).
-  options.levels = parser.count("--levels")
-                       ? args.levels
-                       : std::min(args.levels, defaultStackLevelCount(exemplar.width, exemplar.height));
-  options.maxIterations = args.iterations;
-  MeshHierarchyOptions hierarchyOptions;
-  hierarchyOptions.vertices = args.vertices;
-  hierarchyOptions.levels = options.levels;
-  SurfaceOrientation orientation;
-  if (!args.up.empty()) orientation.smooth.guide = parseDirection(args.up, "--up");
-
-  json report = {{"exemplar", args.exemplar},
-                 {"exemplar_size", {exemplar.width, exemplar.height}},
-                 {"mesh", args.mesh},
-                 {"seed", globals.seed},
-                 {"input",
-                  {{"vertices", input.vertexCount()},
-                   {"triangles", input.triangleCount()},
-                   {"welded_vertices", welded.mesh.vertexCount()}}}};
-  report["read_seconds"] = lap();
+  SurfaceSetupArgs setupArgs{args.exemplar,     args.mesh,       args.field,
+                             args.sketch,       args.up,         args.vertices,
+                             args.levels,       args.iterations, parser.count("--levels") > 0,
+                             !args.bake.empty()};
+  json report;
   auto progress = makeProgress(globals);
-  const std::string cache = defaultCacheDirectory();
-  std::vector<ExemplarAnalysis> analyses;
-  for (const AnalysisOptions& analysisOptions : optimizationAnalysisOptions(options))
-    analyses.push_back(analyzeExemplarCached(exemplar, analysisOptions, cache, *progress));
-  report["analysis_seconds"] = lap();
-
-  const bool cached =
-      std::filesystem::exists(meshHierarchyCachePath(cache, meshHierarchyCacheKey(welded.mesh, hierarchyOptions)));
-  MeshHierarchy hierarchy = namingMesh(
-      args.mesh, [&] { return buildMeshHierarchyCached(welded.mesh, hierarchyOptions, args.mesh, cache, *progress); });
-  report["hierarchy_cached"] = cached;
-  report["hierarchy_seconds"] = lap();
-
-  std::optional<RotationField> field;
-  if (!args.field.empty()) field = readField(args.field).rotations;
-  if (!args.sketch.empty())
-    field = namingMesh(args.mesh, [&] {
-              return designField(input, readSketch(args.sketch), {}, *progress, args.sketch);
-            }).rotations;
-  if (field) orientation.field = &*field;
-  report["field_seconds"] = lap();
-  const PreparedSurface surface = namingMesh(args.mesh, [&] {
-    return prepareSurface(std::move(hierarchy), orientation, options.neighborhoodSizes, *progress);
-  });
-  report["prepare_seconds"] = lap();
-  const SurfaceSynthesisResult synthesis = synthesizeSurface(analyses, surface, options, *progress);
-  report["synthesis_seconds"] = lap();
+  SurfaceSetup setup = setUpSurface(setupArgs, globals, report, *progress);
+  const Image& exemplar = setup.exemplar;
+  const Mesh& input = setup.input;
+  const PreparedSurface& surface = *setup.surface;
+  LapTimer timer;
+  const SurfaceSynthesisResult synthesis = synthesizeSurface(setup.analyses, surface, setup.options, *progress);
+  report["synthesis_seconds"] = timer.lap();
 
   SurfaceResult result;
   result.colored = surface.finestMesh();
@@ -256,10 +139,10 @@ void runSurface(const CLI::App& parser, const SurfaceArgs& args, const GlobalOpt
   }
   report["first_level"] = synthesis.firstLevel;
   report["steps"] = historyJson(synthesis.history);
-  const std::string summary = "synthesized " + std::to_string(result.colored.vertexCount()) + " vertices in " +
-                              seconds(secondsSince(start)) + " (hierarchy " +
-                              seconds(report["hierarchy_seconds"].get<double>()) + (cached ? ", cached" : "") +
-                              "; synthesis " + seconds(report["synthesis_seconds"].get<double>()) + ")";
+  const std::string summary =
+      "synthesized " + std::to_string(result.colored.vertexCount()) + " vertices in " + seconds(secondsSince(start)) +
+      " (hierarchy " + seconds(report["hierarchy_seconds"].get<double>()) + (setup.hierarchyCached ? ", cached" : "") +
+      "; synthesis " + seconds(report["synthesis_seconds"].get<double>()) + ")";
   finish(args, globals, report, result, *progress, summary);
 }
 

@@ -24,11 +24,12 @@ int main(int argc, char** argv) {
   cli::addGlobalOptions(app, globals);
 
   std::vector<cli::Command> commands = {
-      cli::registerDemoCommand(app, globals),   cli::registerEvalCommand(app, globals),
-      cli::registerRenderCommand(app, globals), cli::registerInfoCommand(app, globals),
-      cli::registerImageCommand(app, globals),  cli::registerSolidCommand(app, globals),
-      cli::registerFieldCommand(app, globals),  cli::registerVectorizeCommand(app, globals),
-      cli::registerEditCommand(app, globals),   cli::registerSurfaceCommand(app, globals),
+      cli::registerDemoCommand(app, globals),    cli::registerEvalCommand(app, globals),
+      cli::registerRenderCommand(app, globals),  cli::registerInfoCommand(app, globals),
+      cli::registerImageCommand(app, globals),   cli::registerSolidCommand(app, globals),
+      cli::registerFieldCommand(app, globals),   cli::registerVectorizeCommand(app, globals),
+      cli::registerEditCommand(app, globals),    cli::registerSurfaceCommand(app, globals),
+      cli::registerAnimateCommand(app, globals),
   };
   // Global flags may also follow the subcommand name.
   for (auto& command : commands) {

@@ -8,10 +8,13 @@
 #include <cerrno>
 #include <charconv>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <mutex>
 #include <set>
+
+#include "texsynth/core/error.h"
 
 namespace texsynth {
 namespace fs = std::filesystem;
@@ -140,6 +143,22 @@ int removeStaleTemporaries(const std::string& directory) {
     if (it->is_regular_file(removeError) && fs::remove(it->path(), removeError)) ++removed;
   }
   return removed;
+}
+
+ScratchDirectory::ScratchDirectory(const std::string& forOutput) {
+  std::error_code ec;
+  fs::path base = fs::temp_directory_path(ec);
+  if (ec) base = "/tmp";
+  std::string pattern = (base / "texsynth-scratch-XXXXXX").string();
+  if (!::mkdtemp(pattern.data()))
+    throw OutputError(forOutput,
+                      "cannot create a scratch directory in '" + base.string() + "': " + std::strerror(errno));
+  path_ = pattern;
+}
+
+ScratchDirectory::~ScratchDirectory() {
+  std::error_code ignored;
+  fs::remove_all(path_, ignored);
 }
 
 }  // namespace texsynth

@@ -5,10 +5,10 @@
 #include <cstdint>
 #include <span>
 
-#include "optimization_grid.h"
 #include "texsynth/core/image.h"
 #include "texsynth/exemplar/projected_index.h"
 #include "texsynth/image/discrete_steps.h"
+#include "texsynth/image/optimization_grid.h"
 
 namespace texsynth::detail {
 

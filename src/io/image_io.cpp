@@ -203,21 +203,23 @@ void writeImage(const std::string& path, const Image& image, const ImageWriteOpt
 
   switch (*format) {
     case Format::Exr:
-      writeAtomically(path,
-                      [&](const std::string& temp) { image_codec::writeExr(temp, path, image, options.exrHalf); });
+      writeAtomically(
+          path, [&](const std::string& temp) { image_codec::writeExr(temp, path, image, options.exrHalf); },
+          options.staging);
       return;
     case Format::Pat:
-      writeFileAtomically(path, image_codec::encodeGimpPattern(image, std::filesystem::path(path).stem().string()));
+      writeFileAtomically(path, image_codec::encodeGimpPattern(image, std::filesystem::path(path).stem().string()),
+                          options.staging);
       return;
     case Format::Png:
-      writeFileAtomically(path, image_codec::encodePng(image, options.bitsPerChannel));
+      writeFileAtomically(path, image_codec::encodePng(image, options.bitsPerChannel), options.staging);
       return;
     case Format::Jpeg:
-      writeFileAtomically(path, image_codec::encodeJpeg(path, image, options.jpegQuality));
+      writeFileAtomically(path, image_codec::encodeJpeg(path, image, options.jpegQuality), options.staging);
       return;
     case Format::Bmp:
     case Format::Tga:
-      writeFileAtomically(path, image_codec::encodeStb(path, image, *format));
+      writeFileAtomically(path, image_codec::encodeStb(path, image, *format), options.staging);
       return;
   }
 }

@@ -6,12 +6,12 @@
 #include <chrono>
 #include <string>
 
-#include "surface_domain.h"
 #include "texsynth/core/error.h"
 #include "texsynth/core/parallel.h"
 #include "texsynth/core/random.h"
 #include "texsynth/core/timing.h"
 #include "texsynth/image/discrete_steps.h"
+#include "texsynth/surface/surface_domain.h"
 
 namespace texsynth {
 namespace {

@@ -27,4 +27,19 @@ void removeTemporariesOnSignals();
 // how many. Done once per directory and process by every atomic write.
 int removeStaleTemporaries(const std::string& directory);
 
+// A private directory (mode 0700) under the system temp directory for scratch files a run reads
+// back itself (a video's frames), removed with everything in it when the object goes. Throws
+// OutputError naming `forOutput`, the output it serves, if it cannot be created.
+class ScratchDirectory {
+ public:
+  explicit ScratchDirectory(const std::string& forOutput);
+  ~ScratchDirectory();
+  ScratchDirectory(const ScratchDirectory&) = delete;
+  ScratchDirectory& operator=(const ScratchDirectory&) = delete;
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+};
+
 }  // namespace texsynth

@@ -68,6 +68,11 @@ struct DiscreteStepOptions {
   const UsageMap* usage = nullptr;  // the usage term; null = none
   int randomCandidates = 0;         // uniformly random exemplar neighborhoods per match
   std::uint64_t randomKey = 0;      // their hash key (seed, level, size, iteration)
+  // A neighborhood whose samples all propose the same exemplar neighborhood is a copy of it:
+  // take it as the match (distance 0) without a search. For animation frames, where most of the
+  // output is such copies carried along by the flow; static synthesis searches them too (the
+  // usage term may still move them).
+  bool acceptCopies = false;
 };
 
 namespace discrete {
@@ -123,6 +128,20 @@ std::int64_t matchDiscrete(const Domain& domain, const ExemplarWindow& window, c
     std::vector<std::uint8_t> kept(std::size_t(window.size * window.size));
     auto colorOf = [&](std::int64_t sample) { return window.exemplarColor(sources[std::size_t(sample)]); };
     for (std::int64_t a = begin; a < end; ++a) {
+      // Each sample q = c + d proposes the exemplar neighborhood centred at S(q) - h d; coherent
+      // runs propose the same one, so repeats of the previous proposal are skipped early.
+      proposals.clear();
+      domain.forEachMember(a, [&](std::int64_t q, auto dx, auto dy) {
+        const std::int32_t proposal = window.shifted(sources[std::size_t(q)], -dx, -dy);
+        if (proposals.empty() || proposals.back() != proposal) proposals.push_back(proposal);
+      });
+      sortUnique(proposals);
+      if (step.acceptCopies && proposals.size() == 1 && window.isAllowedCentre(proposals[0]) && !domain.masksCells()) {
+        changed[std::size_t(a)] = proposals[0] != matches.pixel[std::size_t(a)];
+        matches.pixel[std::size_t(a)] = proposals[0];
+        matches.distance[std::size_t(a)] = 0;
+        continue;
+      }
       domain.gather(a, colorOf, query.data());
       // Missing cells take the PCA mean (no pull in the ranking) and leave the full distance.
       const std::uint8_t* mask = nullptr;
@@ -140,15 +159,6 @@ std::int64_t matchDiscrete(const Domain& domain, const ExemplarWindow& window, c
         }
         if (keptCount < cells) mask = kept.data(), scale = float(cells) / float(std::max(keptCount, 1));
       }
-      pca.project(query.data(), projected.data());
-      // Each sample q = c + d proposes the exemplar neighborhood centred at S(q) - h d; coherent
-      // runs propose the same one, so repeats of the previous proposal are skipped early.
-      proposals.clear();
-      domain.forEachMember(a, [&](std::int64_t q, auto dx, auto dy) {
-        const std::int32_t proposal = window.shifted(sources[std::size_t(q)], -dx, -dy);
-        if (proposals.empty() || proposals.back() != proposal) proposals.push_back(proposal);
-      });
-      sortUnique(proposals);
       candidates.clear();
       for (std::int32_t u : proposals) {
         const std::int32_t* similar = similarity.similarAt(level, u);
@@ -164,10 +174,16 @@ std::int64_t matchDiscrete(const Domain& domain, const ExemplarWindow& window, c
       }
       sortUnique(candidates);
       // Rank in PCA space (L&H 2005), then measure the few best in full space, with the usage
-      // term, against the current match, which stays on ties.
+      // term, against the current match, which stays on ties. No more candidates than the
+      // shortlist (coherent neighborhoods without random candidates): all of them, unranked.
       ranked.clear();
-      for (std::int32_t c : candidates)
-        ranked.push_back({squaredDistance(projected.data(), pcaLevel.projectedAt(c), dimensions), c});
+      if (candidates.size() > kFullSpaceShortlist) {
+        pca.project(query.data(), projected.data());
+        for (std::int32_t c : candidates)
+          ranked.push_back({squaredDistance(projected.data(), pcaLevel.projectedAt(c), dimensions), c});
+      } else {
+        for (std::int32_t c : candidates) ranked.push_back({0.0f, c});
+      }
       const std::size_t shortlist = std::min<std::size_t>(ranked.size(), kFullSpaceShortlist);
       std::partial_sort(ranked.begin(), ranked.begin() + std::ptrdiff_t(shortlist), ranked.end());
       const std::int32_t current = matches.pixel[std::size_t(a)];
@@ -197,16 +213,26 @@ std::int64_t matchDiscrete(const Domain& domain, const ExemplarWindow& window, c
   return total;
 }
 
+// The color constraint E_c of frame-coherent animation (Kwatra et al. 2005 §4, Han et al.
+// Table 1): every sample's color should stay near u, the previous frame carried along the flow.
+struct ColorConstraint {
+  std::span<const float> colors;  // u: window.channels() floats per sample
+  // lambda: the constraint's weight against all of a sample's votes together (1 = as much as
+  // every covering match; 0 = none).
+  float weight = 0;
+};
+
 // Discrete E-step (window.norm must be Euclidean): each sample takes, among the exemplar pixels
 // its covering matches vote for, their similarity sets and its current source, the one with the
-// least weighted sum of color distances to the votes. A vote weighs (d_p + 0.01)^-voteExponent,
-// d_p its match's mean color distance per pixel (Kwatra's robust weights; 0 = equal votes).
-// Returns the new sources.
+// least weighted sum of color distances to the votes, plus lambda W |x - u| with a `constraint`
+// (W the sample's total vote weight). A vote weighs (d_p + 0.01)^-voteExponent, d_p its match's
+// mean color distance per pixel (Kwatra's robust weights; 0 = equal votes). Returns the new
+// sources.
 template <class Domain>
 std::vector<std::int32_t> updateDiscrete(const Domain& domain, const ExemplarWindow& window,
                                          const ExemplarAnalysis& analysis, int level,
                                          std::span<const std::int32_t> sources, float voteExponent,
-                                         const Matches& matches) {
+                                         const Matches& matches, const ColorConstraint* constraint = nullptr) {
   using namespace discrete;
   TS_CHECK(window.norm == PixelNorm::Euclidean);
   TS_CHECK(std::int64_t(sources.size()) == domain.sampleCount());
@@ -239,10 +265,18 @@ std::vector<std::int32_t> updateDiscrete(const Domain& domain, const ExemplarWin
           tally.back().second += weight;
         else
           tally.push_back({vote, weight});
-      // This sample's share of the (weighted) energy: sum over covering matches of w_p |x - z_p(q)|.
+      // This sample's share of the (weighted) energy: sum over covering matches of w_p |x - z_p(q)|,
+      // plus lambda W |x - u|.
+      float constraintWeight = 0;
+      const float* target = nullptr;
+      if (constraint && constraint->weight > 0) {
+        for (const auto& entry : tally) constraintWeight += entry.second;
+        constraintWeight *= constraint->weight;
+        target = constraint->colors.data() + std::size_t(sample) * std::size_t(channels);
+      }
       auto cost = [&](std::int32_t candidate) {
         const float* color = window.exemplarColor(candidate);
-        float sum = 0;
+        float sum = target ? constraintWeight * std::sqrt(squaredDistance(color, target, channels)) : 0.0f;
         for (const auto& [vote, weight] : tally)
           sum += weight * std::sqrt(squaredDistance(color, window.exemplarColor(vote), channels));
         return sum;
@@ -256,7 +290,11 @@ std::vector<std::int32_t> updateDiscrete(const Domain& domain, const ExemplarWin
         return a.second != b.second ? a.second > b.second : a.first < b.first;
       });
       float bestCost = cost(best);
-      const std::size_t proposing = voteExponent > 0 ? std::min(tally.size(), kProposingVotes) : tally.size();
+      // Nothing beats a cost of 0 (ties keep the current source): a sample every vote and the
+      // constraint agree on needs no search.
+      const std::size_t proposing = bestCost == 0      ? 0
+                                    : voteExponent > 0 ? std::min(tally.size(), kProposingVotes)
+                                                       : tally.size();
       for (std::size_t t = 0; t < proposing; ++t) {
         const std::int32_t* similar = analysis.similarAt(level, tally[t].first);
         for (int i = 0; i < k; ++i) {

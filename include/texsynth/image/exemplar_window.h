@@ -38,6 +38,8 @@ struct ExemplarWindow {
     if (bounded) minX = minY = reach, maxX = exemplarWidth - 1 - reach, maxY = exemplarHeight - 1 - reach;
     // Offsets up to a neighborhood's reach (plus a pixel of rounding) wrap by one conditional step.
     wrapsOnce = (radius + 1) * spacing() < std::min(exemplarWidth, exemplarHeight);
+    fastRows = std::int64_t(exemplarWidth) * exemplarHeight < FixedDivisor::kLimit;
+    rowOf = FixedDivisor(exemplarWidth);
   }
 
   // Matches are exemplar neighborhoods that do not cross the exemplar's wrap-around seam,
@@ -114,15 +116,15 @@ struct ExemplarWindow {
   }
 
   // v mod n, by one conditional step where offsets stay within one exemplar side.
-  int wrap(int v, int n) const {
-    if (!wrapsOnce) return wrapIndex(v, n);
-    return v < 0 ? v + n : (v >= n ? v - n : v);
-  }
+  int wrap(int v, int n) const { return wrapsOnce ? wrapOnce(v, n) : wrapIndex(v, n); }
   std::int32_t moved(std::int32_t pixel, int ox, int oy) const {
-    const int x = wrap(pixel % exemplarWidth + ox, exemplarWidth);
-    const int y = wrap(pixel / exemplarWidth + oy, exemplarHeight);
+    const int row = fastRows ? rowOf.divide(pixel) : pixel / exemplarWidth;
+    const int x = wrap(pixel - row * exemplarWidth + ox, exemplarWidth);
+    const int y = wrap(row + oy, exemplarHeight);
     return std::int32_t(y) * exemplarWidth + x;
   }
+  bool fastRows = false;  // pixel indices below FixedDivisor's limit
+  FixedDivisor rowOf;
 };
 
 }  // namespace texsynth::detail

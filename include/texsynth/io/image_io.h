@@ -9,6 +9,7 @@
 // sizes. Writers go through writeAtomically: a failed write never leaves a partial file.
 #include <string>
 
+#include "texsynth/core/atomic_file.h"
 #include "texsynth/core/image.h"
 
 namespace texsynth {
@@ -34,6 +35,9 @@ struct ImageWriteOptions {
   // (half's 11-bit mantissa keeps more than they have); half the size and much faster to
   // compress. Off: lossless (see writeImage). Never for coordinates.
   bool exrHalf = false;
+  // Inside an OutputBatch: with the run (default), or at once (scratch files the run reads back
+  // itself, such as a video's frames).
+  Staging staging = Staging::WithRun;
 };
 
 // Options that keep an input's precision where the output format can: 16 bits per channel

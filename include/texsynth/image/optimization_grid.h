@@ -1,7 +1,7 @@
 #pragma once
-// Internal to texture optimization: one level's toroidal output grid and its sparse set of
-// active neighborhoods X (centres `stride` apart), as a domain of the discrete steps
-// (texsynth/image/discrete_steps.h); the least-squares solver reads the same grid. Output
+// One level's toroidal output grid and its sparse set of active neighborhoods X (centres
+// `stride` apart), as a domain of the discrete steps (texsynth/image/discrete_steps.h): texture
+// optimization's levels, the least-squares solver and flow animation's frames read it. Output
 // sample y * width + x is pixel (x, y).
 #include <cstdint>
 
@@ -15,14 +15,16 @@ struct OptimizationGrid {
   ExemplarWindow window;
   int width = 0, height = 0;  // output at this level; multiples of stride
   int radius = 0, stride = 1;
+  int offsetX = 0, offsetY = 0;  // of the centres' lattice, in [0, stride): animation moves it frame to frame
 
+  // Centres `stride` apart (0: activeStride(N), Kwatra's N/4); width and height must be multiples of it.
   OptimizationGrid(const ExemplarAnalysis& analysis, int level, int width, int height, int neighborhoodSize,
-                   PixelNorm norm = PixelNorm::Squared)
+                   PixelNorm norm = PixelNorm::Squared, int stride = 0)
       : window(analysis, level, neighborhoodSize, norm),
         width(width),
         height(height),
         radius(neighborhoodSize / 2),
-        stride(activeStride(neighborhoodSize)) {}
+        stride(stride > 0 ? stride : activeStride(neighborhoodSize)) {}
 
   int size() const { return window.size; }
   int activeWidth() const { return width / stride; }
@@ -39,11 +41,11 @@ struct OptimizationGrid {
   template <class ColorOf>
   void gather(std::int64_t a, ColorOf&& colorOf, float* out) const {
     const int c = window.channels();
-    const int x = int(a % activeWidth()) * stride, y = int(a / activeWidth()) * stride;
+    const int x = int(a % activeWidth()) * stride + offsetX, y = int(a / activeWidth()) * stride + offsetY;
     for (int dy = -radius; dy <= radius; ++dy) {
-      const std::int64_t row = std::int64_t(wrapIndex(y + dy, height)) * width;
+      const std::int64_t row = std::int64_t(wrap(y + dy, height)) * width;
       for (int dx = -radius; dx <= radius; ++dx) {
-        const float* color = colorOf(row + wrapIndex(x + dx, width));
+        const float* color = colorOf(row + wrap(x + dx, width));
         for (int i = 0; i < c; ++i) *out++ = color[i];
       }
     }
@@ -52,10 +54,10 @@ struct OptimizationGrid {
   // visit(sample, dx, dy) for every pixel of active neighborhood a, row by row.
   template <class Visit>
   void forEachMember(std::int64_t a, Visit&& visit) const {
-    const int x = int(a % activeWidth()) * stride, y = int(a / activeWidth()) * stride;
+    const int x = int(a % activeWidth()) * stride + offsetX, y = int(a / activeWidth()) * stride + offsetY;
     for (int dy = -radius; dy <= radius; ++dy) {
-      const std::int64_t row = std::int64_t(wrapIndex(y + dy, height)) * width;
-      for (int dx = -radius; dx <= radius; ++dx) visit(row + wrapIndex(x + dx, width), dx, dy);
+      const std::int64_t row = std::int64_t(wrap(y + dy, height)) * width;
+      for (int dx = -radius; dx <= radius; ++dx) visit(row + wrap(x + dx, width), dx, dy);
     }
   }
 
@@ -63,7 +65,7 @@ struct OptimizationGrid {
   // (dx, dy) = (x, y) - centre in [-radius, radius]^2 (unwrapped).
   template <class Visit>
   void forEachCovering(std::int64_t sample, Visit&& visit) const {
-    const int x = int(sample % width), y = int(sample / width);
+    const int x = int(sample % width) - offsetX, y = int(sample / width) - offsetY;
     const int aw = activeWidth(), ah = activeHeight();
     for (int cy = floorDivide(y - radius + stride - 1, stride); cy * stride <= y + radius; ++cy) {
       const int rowIndex = wrapIndex(cy, ah);
@@ -73,6 +75,9 @@ struct OptimizationGrid {
   }
 
   static int floorDivide(int a, int b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
+  // A centre plus an offset of at most the radius (plus the lattice offset) around a side:
+  // one compare where the side is wider than that, a division otherwise (tiny outputs).
+  int wrap(int v, int n) const { return radius + stride < n ? wrapOnce(v, n) : wrapIndex(v, n); }
 };
 
 }  // namespace texsynth::detail

@@ -1,5 +1,5 @@
 #pragma once
-// Internal to surface synthesis: one level's resampled neighborhoods as a domain of the discrete
+// Surface synthesis and flow animation: one level's resampled neighborhoods as a domain of the discrete
 // solver's steps (texsynth/image/discrete_steps.h). Samples are vertices; a neighborhood reads
 // its cells as convex combinations of vertex colors (x_p = W_p x), its members and coverings at
 // their flattened offsets.
