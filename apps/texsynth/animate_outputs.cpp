@@ -18,11 +18,7 @@ namespace {
 
 void createParentDirectory(const std::string& path) {
   const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-  if (parent.empty() || std::filesystem::exists(parent)) return;
-  if (OutputBatch* batch = OutputBatch::active())
-    batch->createDirectories(parent.string());
-  else
-    std::filesystem::create_directories(parent);
+  if (!parent.empty() && !std::filesystem::exists(parent)) createOutputDirectories(parent.string());
 }
 
 }  // namespace

@@ -127,11 +127,7 @@ void runDemo(const DemoArgs& args, const GlobalOptions& globals) {
   if (fs::exists(args.outputDir, ec) && !fs::is_directory(args.outputDir, ec))
     throw OutputError(args.outputDir, "exists and is not a directory");
   // Created through the run's batch: removed again, with everything staged in it, if the demo fails.
-  if (OutputBatch* batch = OutputBatch::active())
-    batch->createDirectories(args.outputDir);
-  else
-    fs::create_directories(args.outputDir, ec);
-  if (!fs::is_directory(args.outputDir, ec)) throw OutputError(args.outputDir, "cannot create the output directory");
+  createOutputDirectories(args.outputDir);
   auto progress = makeProgress(globals);
   auto out = [&](const std::string& name) { return (fs::path(args.outputDir) / name).string(); };
   json report;

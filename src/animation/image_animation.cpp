@@ -60,11 +60,7 @@ std::vector<std::int32_t> ImageAnimator::staticSynthesis(std::uint64_t seed, Pro
   }
   const TextureOptimizationResult result =
       optimizeTexture(analyses_, options, width_, height_, progress, start ? &*start : nullptr);
-  std::vector<std::int32_t> sources(std::size_t(width_) * std::size_t(height_));
-  const int exemplarWidth = analyses_.back().width;
-  for (std::size_t i = 0; i < sources.size(); ++i)
-    sources[i] = result.coords.xy[2 * i + 1] * exemplarWidth + result.coords.xy[2 * i];
-  return sources;
+  return result.coords.pixelIndices(analyses_.back().width);
 }
 
 Image ImageAnimator::colorsOf(std::span<const std::int32_t> sources) const {

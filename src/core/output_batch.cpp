@@ -126,4 +126,11 @@ void OutputBatch::commit() {
   committed_ = true;
 }
 
+void createOutputDirectories(const std::string& directory) {
+  if (OutputBatch* batch = OutputBatch::active()) return batch->createDirectories(directory);
+  std::error_code ec;
+  fs::create_directories(directory, ec);
+  if (!fs::is_directory(directory, ec)) throw OutputError(directory, "cannot create the directory: " + ec.message());
+}
+
 }  // namespace texsynth

@@ -111,12 +111,7 @@ Image upsampleColors(const Image& coarse, int width, int height) {
   return fine;
 }
 
-// Source coordinates as exemplar pixel indices (the discrete steps' sources), and back.
-std::vector<std::int32_t> toSources(const SourceCoordinates& coords, int exemplarWidth) {
-  std::vector<std::int32_t> sources(coords.xy.size() / 2);
-  for (std::size_t i = 0; i < sources.size(); ++i) sources[i] = coords.xy[2 * i + 1] * exemplarWidth + coords.xy[2 * i];
-  return sources;
-}
+// Exemplar pixel indices (the discrete steps' sources) back into source coordinates.
 
 void assignSources(std::span<const std::int32_t> sources, int exemplarWidth, SourceCoordinates& coords) {
   for (std::size_t i = 0; i < sources.size(); ++i) {
@@ -139,7 +134,7 @@ void optimizeScale(std::span<const ExemplarAnalysis> analyses, const TextureOpti
   const int size = options.neighborhoodSizes[scale];
   if (!isLeastSquares(options)) {
     const OptimizationGrid grid(analysis, level, state.coords.width, state.coords.height, size);
-    std::vector<std::int32_t> sources = toSources(state.coords, analysis.width);
+    std::vector<std::int32_t> sources = state.coords.pixelIndices(analysis.width);
     detail::optimizeDiscreteScale(grid, analyses, level, scale, options, sources, history, progress);
     assignSources(sources, analysis.width, state.coords);
     return;
@@ -250,7 +245,7 @@ TextureOptimizationResult optimizeTexture(std::span<const ExemplarAnalysis> anal
     if (level > first && !isLeastSquares(options))
       jitterCoordinates(state.coords, level, spacing, options.jitter, options.seed, base.width, base.height);
     if (isLeastSquares(options))
-      state.colors = level == first ? detail::colorsAt(start, toSources(state.coords, base.width))
+      state.colors = level == first ? detail::colorsAt(start, state.coords.pixelIndices(base.width))
                                     : upsampleColors(state.colors, w, h);
     for (std::size_t scale = 0; scale < options.neighborhoodSizes.size(); ++scale)
       optimizeScale(analyses, options, level, scale, state, result.history, progress);
@@ -263,7 +258,7 @@ TextureOptimizationResult optimizeTexture(std::span<const ExemplarAnalysis> anal
     colors = std::move(state.colors);
   } else {
     result.coords = cropCoordinates(state.coords, width, height);
-    colors = detail::colorsAt(finest, toSources(state.coords, base.width));
+    colors = detail::colorsAt(finest, state.coords.pixelIndices(base.width));
   }
   result.colors = colors.crop(0, 0, width, height).withChannels(base.colorChannels);
   return result;

@@ -45,4 +45,8 @@ class OutputBatch {
   bool committed_ = false;
 };
 
+// Creates `directory` and any missing parents for a run's outputs: through the active batch (so
+// they go again if the run fails), or at once without one. Throws OutputError if it cannot.
+void createOutputDirectories(const std::string& directory);
+
 }  // namespace texsynth

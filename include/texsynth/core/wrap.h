@@ -23,14 +23,12 @@ constexpr int wrapOnce(int i, int n) {
 class FixedDivisor {
  public:
   FixedDivisor() = default;
-  explicit constexpr FixedDivisor(int divisor)
-      : divisor_(divisor), multiplier_((std::uint64_t(1) << 40) / std::uint64_t(divisor) + 1) {}
+  explicit constexpr FixedDivisor(int divisor) : multiplier_((std::uint64_t(1) << 40) / std::uint64_t(divisor) + 1) {}
   // n in [0, 2^24).
   constexpr int divide(std::int32_t n) const { return int((std::uint64_t(n) * multiplier_) >> 40); }
   static constexpr std::int32_t kLimit = 1 << 24;
 
  private:
-  int divisor_ = 1;
   std::uint64_t multiplier_ = (std::uint64_t(1) << 40) + 1;
 };
 

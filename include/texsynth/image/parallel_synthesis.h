@@ -69,6 +69,13 @@ struct SourceCoordinates {
   // Coordinates of absolute pixel (x, y); it must lie inside the window.
   std::int32_t* at(int x, int y) { return xy.data() + offset(x, y); }
   const std::int32_t* at(int x, int y) const { return xy.data() + offset(x, y); }
+  // Every pixel's coordinates as an exemplar pixel index y * exemplarWidth + x, row by row (the
+  // discrete solvers' sources).
+  std::vector<std::int32_t> pixelIndices(int exemplarWidth) const {
+    std::vector<std::int32_t> pixels(xy.size() / 2);
+    for (std::size_t i = 0; i < pixels.size(); ++i) pixels[i] = xy[2 * i + 1] * exemplarWidth + xy[2 * i];
+    return pixels;
+  }
 };
 
 // Synthesizes the source coordinates of output window (x0, y0, w, h) at the finest level.
