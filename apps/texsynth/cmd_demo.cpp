@@ -13,6 +13,7 @@
 #include "demo_animation.h"
 #include "demo_fallbacks.h"
 #include "demo_gradient.h"
+#include "demo_lazy.h"
 #include "demo_pixel.h"
 #include "demo_surface.h"
 #include "image_layout.h"
@@ -114,6 +115,7 @@ std::string markdownReport(const json& r) {
   md << pixelMarkdown(r["pixel"], r["tiling_baseline"]);
   md << surfaceMarkdown(r["surface"]);
   md << animationMarkdown(r["animation"]);
+  md << lazySolidMarkdown(r["lazy_solid"]);
   md << gradientMarkdown(r["gradient"]);
   return md.str();
 }
@@ -228,6 +230,12 @@ void runDemo(const DemoArgs& args, const GlobalOptions& globals) {
   progress->advance(1);
   progress->end();
 
+  progress->begin("lazy solid", 1);
+  report["lazy_solid"] = demoLazySolid(mesh, exemplar, exemplarFallback ? "procedural marble" : exemplarPath,
+                                       globals.seed, cacheDir, render, views, out);
+  progress->advance(1);
+  progress->end();
+
   progress->begin("gradient solids", 1);
   report["gradient"] = demoGradientSolids(exemplar, globals.seed, cacheDir, out);
   progress->advance(1);
@@ -238,7 +246,7 @@ void runDemo(const DemoArgs& args, const GlobalOptions& globals) {
   if (globals.json) printJson(report);
   say(globals, "wrote " + out("report.md") +
                    " with exemplar.png, gaussian_stack.png, mesh.png, mesh_solid.png, pixel_synthesis.png, "
-                   "surface_synthesis.png, animation_frames.png, animation_lambdas.png, animation.gif, "
+                   "surface_synthesis.png, animation_frames.png, animation_lambdas.png, animation.gif, lazy_solid.png, "
                    "gradient_magnified.png, "
                    "gradient_edit.png, gradient_synthesized.png and gradient_solid.tsgs");
 }
@@ -246,13 +254,14 @@ void runDemo(const DemoArgs& args, const GlobalOptions& globals) {
 }  // namespace
 
 Command registerDemoCommand(CLI::App& app, const GlobalOptions& globals) {
-  auto* sub =
-      app.add_subcommand("demo",
-                         "A tour on built-in defaults: analyse a real exemplar (GIMP's pink marble), render a real "
-                         "mesh (CGAL's bunny) plain and solid-textured, synthesize and score 2D textures, grow a "
-                         "texture on the mesh's surface, animate a texture along a flow, vectorize "
-                         "and edit a small gradient solid, and write a "
-                         "report with pictures into DIR");
+  auto* sub = app.add_subcommand(
+      "demo",
+      "A tour on built-in defaults: analyse a real exemplar (GIMP's pink marble), render a real "
+      "mesh (CGAL's bunny) plain and solid-textured, synthesize and score 2D textures, grow a "
+      "texture on the mesh's surface, animate a texture along a flow, follow a sketched field with a lazy "
+      "solid and cut it open, vectorize "
+      "and edit a small gradient solid, and write a "
+      "report with pictures into DIR");
   auto args = std::make_shared<DemoArgs>();
   sub->add_option("-o,--output", args->outputDir, "Directory for the report and pictures")->capture_default_str();
   inputFiles(sub->add_option("--exemplar", args->exemplar,

@@ -55,11 +55,11 @@ class PointRecorder : public SolidTexture {
 // Runs `consume` on `solid`; a solid that synthesizes on demand first prepares exactly the
 // points the consumer will ask for.
 template <typename Consume>
-auto withPrepared(SolidTexture& solid, Consume consume) {
+auto withPrepared(SolidTexture& solid, Progress& progress, Consume consume) {
   if (solid.preparesOnDemand()) {
     PointRecorder recorder(solid.channels());
     consume(static_cast<const SolidTexture&>(recorder));
-    solid.prepare(recorder.take());
+    solid.prepare(recorder.take(), progress);
   }
   return consume(static_cast<const SolidTexture&>(solid));
 }
@@ -141,7 +141,7 @@ void requireSolidMemory(const SolidArgs& args, const Box3f& box) {
 
 std::unique_ptr<SolidTexture> makeSolid(const SolidArgs& args, const Mesh& mesh, const Box3f& box, std::uint64_t seed,
                                         const GlobalOptions& globals, json& report, LazyBuild& lazy,
-                                        std::shared_ptr<const GradientSolid>& gradient) {
+                                        std::shared_ptr<const GradientSolid>& gradient, Progress& synthesisProgress) {
   const std::string& exemplar = args.exemplars.front();
   if (args.method == "gradient") {  // a finished gradient solid or one synthesized now, spanning the box
     const bool file = fileExtension(exemplar) == kGradientSolidExtension;
@@ -172,7 +172,7 @@ std::unique_ptr<SolidTexture> makeSolid(const SolidArgs& args, const Mesh& mesh,
   SolidPlacement placement = fitPlacement(box, tileSide, args.tiles);
   if (args.method == "lazy") {
     if (volumeExemplar) throw ParameterError("--method", "lazy takes 2D exemplars, not a volume");
-    lazy = makeLazySolid(args, mesh, box, placement, seed, report);
+    lazy = makeLazySolid(args, mesh, box, placement, seed, report, synthesisProgress);
     return std::move(lazy.texture);
   }
   if (args.exemplars.size() > 1)
@@ -233,6 +233,9 @@ const std::vector<ModeFlag> kSolidModeFlags = {
     {"--coarsest-passes", {"lazy"}},
     {"--dual-grid", {"lazy"}},
     {"--grid-cell", {"lazy"}},
+    {"--subpasses", {"lazy"}},
+    {"--candidates", {"lazy"}},
+    {"--color-rule", {"lazy"}},
     {"--tiles", {"tile-deform", "tile-blend", "lazy"}},
     {"--detail", {"gradient", "gradient-file"}},
 };
@@ -265,6 +268,8 @@ ParameterSources solidParameterSources(const SolidArgs& args) {
           {"passes", fromFlag("--passes")},
           {"coarsestPasses", fromFlag("--coarsest-passes")},
           {"gridCellSize", fromFlag("--grid-cell")},
+          {"subpassGrid", fromFlag("--subpasses")},
+          {"candidateCount", fromFlag("--candidates")},
           {"depth", fromFlag("--shell")}};
 }
 
@@ -305,21 +310,24 @@ void runSolid(const CLI::App& parser, SolidArgs& args, const GlobalOptions& glob
   std::vector<Vec3f> surfacePoints;
   if (args.surface > 0) {
     surfacePoints = surfaceVoxelCenters(mesh, box, args.surface);
-    // A lazy surface synthesizes the voxels its finer levels' corrections read: 4.4 GB for the bunny's 825k surface
-    // voxels at 512 (README), about 5.3 KB each.
-    requireMemory(double(surfacePoints.size()) * (args.method == "lazy" ? 6000.0 : 64.0), "--surface",
+    // A lazy surface synthesizes the voxels its finer levels' corrections read: 1.7 GB at the peak for the bunny's
+    // 825k surface voxels at 512 (bench/lazy_solid_cut.sh), about 2.1 KB each.
+    requireMemory(double(surfacePoints.size()) * (args.method == "lazy" ? 2500.0 : 64.0), "--surface",
                   "the " + std::to_string(surfacePoints.size()) + " voxels of the surface");
   }
   LazyBuild lazy;
   std::shared_ptr<const GradientSolid> gradient;
-  std::unique_ptr<SolidTexture> solid = makeSolid(args, mesh, box, globals.seed, globals, report, lazy, gradient);
+  // Synthesis on demand (the lazy method's levels) reports apart from the outputs' stage.
+  auto synthesisProgress = makeProgress(globals);
+  std::unique_ptr<SolidTexture> solid =
+      makeSolid(args, mesh, box, globals.seed, globals, report, lazy, gradient, *synthesisProgress);
   report["setup_seconds"] = lap();
   report["setup_peak_rss_mib"] = takePeakResidentMiB();
   if (!lazy.parts.empty())  // the work so far: the coarsest level over the box (separate from what follows)
     report["coarsest_level"]["lazy"] = lazyStats(lazy);
   if (args.surface > 0) {  // the whole surface at a resolution: synthesized and evaluated, for timing
     const std::vector<Vec3f>& points = surfacePoints;
-    solid->prepare(points);
+    solid->prepare(points, *synthesisProgress);
     const double prepared = lap();
     solid->evaluateColors(points);
     report["surface"] = {{"resolution", args.surface},
@@ -340,18 +348,19 @@ void runSolid(const CLI::App& parser, SolidArgs& args, const GlobalOptions& glob
       writeGradientSolid(out, *gradient);
     } else if (fileKind(out) == FileKind::Image) {
       auto [axis, position] = slices[nextSlice++];
-      writeImage(out, withPrepared(*solid, [&](const SolidTexture& s) {
+      writeImage(out, withPrepared(*solid, *synthesisProgress, [&](const SolidTexture& s) {
                    return sampleSlice(s, box, axis, position, args.resolution);
                  }));
     } else if (ext == "nrrd" || ext == "vdb") {
       VolumeWriteOptions volumeOptions;
       volumeOptions.floatSamples = args.floatVolume;
       writeVolume(out,
-                  withPrepared(*solid, [&](const SolidTexture& s) { return sampleVolume(s, box, args.resolution); }),
+                  withPrepared(*solid, *synthesisProgress,
+                               [&](const SolidTexture& s) { return sampleVolume(s, box, args.resolution); }),
                   volumeOptions);
     } else {
       Mesh colored = mesh;
-      solid->prepare(colored.positions);
+      solid->prepare(colored.positions, *synthesisProgress);
       colorMeshVertices(colored, *solid);
       writeMesh(out, colored);
     }
@@ -366,9 +375,9 @@ void runSolid(const CLI::App& parser, SolidArgs& args, const GlobalOptions& glob
     for (int v = 0; v < args.views; ++v) views.push_back({30.0f + 90.0f * v, 20.0f});
     SurfaceColorFunction colorAt = surfaceColorFunction(*solid);
     if (solid->preparesOnDemand())  // the renderer asks once per view for all visible points: prepare them first
-      colorAt = [&solid](const std::vector<Vec3f>& points, const std::vector<Vec3f>& normals,
-                         std::vector<Vec3f>& colors) {
-        solid->prepare(points);
+      colorAt = [&solid, &synthesisProgress](const std::vector<Vec3f>& points, const std::vector<Vec3f>& normals,
+                                             std::vector<Vec3f>& colors) {
+        solid->prepare(points, *synthesisProgress);
         colors = solid->evaluateColors(points, normals);
       };
     Image image = renderViews(mesh, &colorAt, views, options);
@@ -487,7 +496,9 @@ Command registerSolidCommand(CLI::App& app, const GlobalOptions& globals) {
       ->capture_default_str()
       ->check(finiteIn(1e-4, 1, true));
   sub->add_option("--levels", args->levels, "lazy: pyramid levels L")->capture_default_str()->check(integerIn(1, 8));
-  sub->add_option("--passes", args->passes, "lazy: correction passes per level above the coarsest (8 subpasses each)")
+  sub->add_option("--passes", args->passes,
+                  "lazy: correction passes per level above the coarsest (paper: 2); each widens what a request depends "
+                  "on, so 1 answers a model in seconds")
       ->capture_default_str()
       ->check(integerIn(0, 8));
   sub->add_option("--coarsest-passes", args->coarsestPasses,
@@ -495,13 +506,28 @@ Command registerSolidCommand(CLI::App& app, const GlobalOptions& globals) {
       ->capture_default_str()
       ->check(integerIn(0, 8));
   sub->add_flag("--dual-grid,!--no-dual-grid", args->dualGrid,
-                "lazy: dual-grid correction (paper §5.3, on by default) on all levels but the coarsest: corrections "
-                "read only their own MxMxM cell's current state, so a request depends on far fewer voxels; "
-                "--no-dual-grid: the standard pass scheme");
+                "lazy: dual-grid correction (paper §5.3) on all levels but the coarsest: corrections read only their "
+                "own MxMxM cell's current state, so a request depends on about 2 (M + N/sqrt 2) voxels per side "
+                "and level whatever the passes and subpasses; the default, the standard scheme with --subpasses 1, "
+                "depends on only passes x N/sqrt 2");
   sub->add_option("--grid-cell", args->gridCell,
                   "lazy with --dual-grid: the cell side M in voxels, even (paper: 10-15)")
       ->capture_default_str()
       ->check(integerIn(4, 32));
+  sub->add_option("--subpasses", args->subpasses,
+                  "lazy: s, each pass corrects the s^3 voxel classes (x, y, z mod s) in turn (paper: 2); 1 corrects "
+                  "all voxels at once from the state before the pass")
+      ->capture_default_str()
+      ->check(integerIn(1, 2));
+  sub->add_option("--candidates", args->candidates,
+                  "lazy: N_T, candidate triples per exemplar pixel (paper: 12); fewer is faster")
+      ->capture_default_str()
+      ->check(integerIn(1, 64));
+  sub->add_option("--color-rule", args->colorRule,
+                  "lazy: a voxel's colour from its three planes' exemplar pixels: medoid (the one closest to the other "
+                  "two, a real exemplar colour: crisp) or mean (soft where the planes disagree)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"medoid", "mean"}));
   inputFiles(
       sub->add_option(
           "--sketch", args->sketch,

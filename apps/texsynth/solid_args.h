@@ -28,8 +28,9 @@ struct SolidArgs {
   // lazy
   std::string field, sketch, inner, cut;
   std::vector<std::string> masks;
-  int levels = 4, passes = 2, coarsestPasses = 3, gridCell = 12;
-  bool dualGrid = true;
+  int levels = 4, passes = 1, coarsestPasses = 3, gridCell = 12, subpasses = 1, candidates = 6;
+  std::string colorRule = "medoid";
+  bool dualGrid = false;
   float shell = 0.05f;
   // gradient: synthesis from images, or a finished solid (.tsgs input)
   std::string detail = "on";
@@ -46,7 +47,7 @@ struct LazyBuild {
   std::vector<std::pair<std::string, std::shared_ptr<LazySolid>>> parts;  // name, synthesis
 };
 LazyBuild makeLazySolid(const SolidArgs& args, const Mesh& mesh, const Box3f& box, const SolidPlacement& placement,
-                        std::uint64_t seed, nlohmann::json& report);
+                        std::uint64_t seed, nlohmann::json& report, Progress& progress);
 
 // --method gradient with image exemplars: a gradient solid synthesized over `box` at --resolution (§4 of
 // gradient-solid-textures), following --field or the field of --sketch, with --inner's exemplar deeper than

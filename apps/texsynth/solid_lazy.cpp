@@ -30,26 +30,34 @@ std::shared_ptr<LazySolid> makeSynthesis(const std::vector<std::string>& exempla
 }  // namespace
 
 LazyBuild makeLazySolid(const SolidArgs& args, const Mesh& mesh, const Box3f& box, const SolidPlacement& placement,
-                        std::uint64_t seed, json& report) {
+                        std::uint64_t seed, json& report, Progress& progress) {
   LazySolidOptions options;
   options.levels = args.levels;
   options.passes = args.passes;
   options.coarsestPasses = args.coarsestPasses;
   options.dualGrid = args.dualGrid;
   options.gridCellSize = args.gridCell;
+  options.subpassGrid = args.subpasses;
+  options.candidateCount = args.candidates;
+  options.colorRule =
+      args.colorRule == "mean" ? LazySolidOptions::ColorRule::Mean : LazySolidOptions::ColorRule::Medoid;
   options.seed = seed;
   options.cacheDirectory = defaultCacheDirectory();
+  setLazyDomain(options, placement, box);
   if (!args.masks.empty() && args.masks.size() != 1 && args.masks.size() != args.exemplars.size())
     throw ParameterError("--mask", "give one mask for all planes, or one per exemplar (XY YZ ZX)");
   for (const std::string& mask : args.masks) options.featureMasks.push_back(readImage(mask));
   LazyOrientation orientation;
   if (!args.field.empty()) {
-    orientation = lazyOrientationFromField(readField(args.field).rotations, placement, options.levels);
+    const RotationField field = readField(args.field).rotations;
+    orientation = lazyOrientationFromField(field, placement, options.levels);
+    options.orientationKey = lazyOrientationKey(field, placement, options.levels);
     report["field"] = args.field;
   } else if (!args.sketch.empty()) {
     if (mesh.positions.empty()) throw ParameterError("--sketch", "needs --mesh: the field is designed around it");
     const FieldDesign design = designField(mesh, readSketch(args.sketch), {}, noProgress(), args.sketch);
     orientation = lazyOrientationFromField(design.rotations, placement, options.levels);
+    options.orientationKey = lazyOrientationKey(design.rotations, placement, options.levels);
     report["sketch"] = args.sketch;
   }
   report["variant"] = !args.field.empty()    ? "lazy, guided by --field"
@@ -60,12 +68,13 @@ LazyBuild makeLazySolid(const SolidArgs& args, const Mesh& mesh, const Box3f& bo
   auto outer = makeSynthesis(args.exemplars, options, orientation);
   build.parts.push_back({"shell", outer});
   auto outerTexture = std::make_shared<LazySolidTexture>(outer, placement);
-  // The coarsest level over the whole box once (as the paper does for its volume): every
-  // surface, slice or cut inside then reuses it.
+  // The coarsest level over the whole box once (as the paper does for its volume; from the disk
+  // cache when this model and exemplar were synthesized before): every surface, slice or cut
+  // inside then reuses it.
   report["coarsest_level"]["seconds"] = 0.0;  // shell and core together
   const auto coarsest = [&](LazySolidTexture& texture) {
     const auto started = std::chrono::steady_clock::now();
-    texture.prepareDomain(box);
+    texture.solid().prepareCoarsestLevel(progress);
     json& seconds = report["coarsest_level"]["seconds"];
     seconds = seconds.get<double>() + std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   };
@@ -102,7 +111,8 @@ json lazyStats(const LazyBuild& build) {
                         {"blocks_cached", st.blocksCached},
                         {"seconds", st.seconds},
                         {"peak_working_mib", double(st.peakWorkingBytes) / (1 << 20)},
-                        {"cached_mib", double(st.cachedBytes) / (1 << 20)}});
+                        {"cached_mib", double(st.cachedBytes) / (1 << 20)},
+                        {"from_disk_cache", st.fromDiskCache}});
     }
     parts.push_back({{"region", name}, {"levels", levels}});
   }

@@ -48,7 +48,7 @@ constexpr int kOffsets[9][2] = {{0, 0}, {-1, -1}, {0, -1}, {1, -1}, {-1, 0}, {1,
 // The blocks around one block whose state before a step may be read, as a dense table.
 class BlockNeighborhood {
  public:
-  BlockNeighborhood(const WorkSet& set, const Vec3i& block, int radius, int step)
+  BlockNeighborhood(const LevelContext& ctx, const WorkSet& set, const Vec3i& block, int radius, int step)
       : set_(set), span_((kB - 1 + radius) / kB), side_(2 * span_ + 1) {
     for (const WorkSet::Version& snapshot : set.snapshots) {
       TS_CHECK(snapshot.version >= 0 && std::size_t(snapshot.version) < byVersion_.size());
@@ -58,8 +58,8 @@ class BlockNeighborhood {
     for (int z = 0; z < side_; ++z)
       for (int y = 0; y < side_; ++y)
         for (int x = 0; x < side_; ++x) {
-          const std::int32_t i =
-              set.indexOf(blockKey(block.x() + x - span_, block.y() + y - span_, block.z() + z - span_));
+          const Vec3i stored = ctx.storedBlock(block + Vec3i(x, y, z) - Vec3i::Constant(span_));
+          const std::int32_t i = set.indexOf(blockKey(stored.x(), stored.y(), stored.z()));
           table_[std::size_t((z * side_ + y) * side_ + x)] =
               i >= 0 && set.lastLayer[std::size_t(i)] >= step - 1 ? i : -1;
         }
@@ -73,9 +73,9 @@ class BlockNeighborhood {
     return t * kBlockVoxels + ((u.z() % kB) * kB + u.y() % kB) * kB + u.x() % kB;
   }
   const WorkBlock& block(int located) const { return set_.blocks[index(located)]; }
-  // A located voxel's colours and triple: now (version < 0), or its snapshot of `version`.
+  // A located voxel's colours (kVoxelColors) and triple: now (version < 0), or its snapshot of `version`.
   const float* colors(int located, int version) const {
-    const std::size_t slot = std::size_t(located % kBlockVoxels) * kMaxChannels;
+    const std::size_t slot = std::size_t(located % kBlockVoxels) * kVoxelColors;
     return (version < 0 ? block(located).colors.data() : snapshot(version, located).colors.data()) + slot;
   }
   const CoordinateTriple& triple(int located, int version) const {
@@ -169,12 +169,12 @@ class VoxelCorrector {
       float* write = buffer_.data();
       for (int k = 0; k < taps; ++k) {
         if (integrated_) {
-          if (!sampleTrilinear(around, local, taps_[std::size_t(p * taps + k)], write)) return false;
+          if (!sampleTrilinear(around, local, p, taps_[std::size_t(p * taps + k)], write)) return false;
           write += c;
           continue;
         }
         const std::size_t tap = std::size_t(p * taps + k);
-        const float* color = around.colors(located_[tap], versionAt(offsets_[tap]));
+        const float* color = around.colors(located_[tap], versionAt(offsets_[tap])) + p * kMaxChannels;
         for (int i = 0; i < c; ++i) *write++ = color[i];  // c is small: no memmove call
       }
       ctx_.planes[p]->pca.project(buffer_.data(), query_[p].data());
@@ -287,8 +287,9 @@ class VoxelCorrector {
     return true;
   }
 
-  // Colour at a fractional offset: trilinear over the 8 voxels around it, into out[channels].
-  bool sampleTrilinear(const BlockNeighborhood& around, const Vec3i& local, const Vec3f& offset, float* out) const {
+  // Plane p's colour at a fractional offset: trilinear over the 8 voxels around it, into out[channels].
+  bool sampleTrilinear(const BlockNeighborhood& around, const Vec3i& local, int p, const Vec3f& offset,
+                       float* out) const {
     const Vec3f base(std::floor(offset.x()), std::floor(offset.y()), std::floor(offset.z()));
     const Vec3f f = offset - base;
     const Vec3i corner0 = base.cast<int>();
@@ -300,7 +301,7 @@ class VoxelCorrector {
       if (w == 0.0f) continue;
       const int at = around.locate(local, corner0 + d);
       if (at < 0) return false;
-      const float* color = around.colors(at, versionAt(corner0 + d));
+      const float* color = around.colors(at, versionAt(corner0 + d)) + p * kMaxChannels;
       for (int i = 0; i < c; ++i) out[i] += w * color[i];
     }
     return true;
@@ -389,7 +390,7 @@ StepCounts correctStep(const LevelContext& ctx, WorkSet& set, int step, const St
     for (std::int64_t i = begin; i < end; ++i) {
       const std::size_t index = std::size_t(targets[std::size_t(i)]);
       const WorkBlock& in = set.blocks[index];
-      const BlockNeighborhood around(set, blockIndex(set.keys[index]), radius, step);
+      const BlockNeighborhood around(ctx, set, blockIndex(set.keys[index]), radius, step);
       for (int slot = 0; slot < kBlockVoxels; ++slot) {
         const Vec3i v = in.origin + Vec3i(slot % kB, slot / kB % kB, slot / (kB * kB));
         if (voxelClass >= 0 && subpassClassOf(v, s) != voxelClass) continue;
@@ -407,7 +408,7 @@ StepCounts correctStep(const LevelContext& ctx, WorkSet& set, int step, const St
         if (!(corrected[std::size_t(i)] >> slot & 1)) continue;
         const CoordinateTriple t = results[std::size_t(i) * kBlockVoxels + std::size_t(slot)];
         out.triples[std::size_t(slot)] = t;
-        ctx.color(t, out.colors.data() + std::size_t(slot) * kMaxChannels);
+        ctx.color(t, out.colors.data() + std::size_t(slot) * kVoxelColors);
       }
     }
   });

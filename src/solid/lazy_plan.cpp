@@ -173,16 +173,34 @@ void WorkSet::dropSnapshotsExcept(const std::vector<int>& versions) {
   });
 }
 
-std::vector<BlockKey> parentBlocks(const std::vector<BlockKey>& blocks) {
-  // Voxels 4b..4b+3 have parents 2b..2b+1, all inside parent block floor(b / 2).
-  std::vector<BlockKey> parents;
+std::vector<BlockMask> mergeMasks(std::vector<BlockMask> masks) {
+  std::sort(masks.begin(), masks.end(), [](const BlockMask& a, const BlockMask& b) { return a.key < b.key; });
+  std::vector<BlockMask> merged;
+  for (const BlockMask& m : masks) {
+    if (!merged.empty() && merged.back().key == m.key)
+      merged.back().voxels |= m.voxels;
+    else
+      merged.push_back(m);
+  }
+  return merged;
+}
+
+std::vector<BlockMask> parentMasks(const std::vector<BlockKey>& blocks) {
+  // Voxels 4b..4b+3 have parents 2b..2b+1: a 2^3 corner of parent block floor(b / 2).
+  std::vector<BlockMask> parents;
   parents.reserve(blocks.size());
   for (BlockKey key : blocks) {
     const Vec3i b = blockIndex(key);
-    parents.push_back(blockKey(floorDiv(b.x(), 2), floorDiv(b.y(), 2), floorDiv(b.z(), 2)));
+    const Vec3i parent(floorDiv(b.x(), 2), floorDiv(b.y(), 2), floorDiv(b.z(), 2));
+    const Vec3i corner = 2 * (b - 2 * parent);
+    std::uint64_t bits = 0;
+    for (int z = 0; z < 2; ++z)
+      for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < 2; ++x)
+          bits |= std::uint64_t(1) << (((corner.z() + z) * kB + corner.y() + y) * kB + corner.x() + x);
+    parents.push_back({blockKey(parent.x(), parent.y(), parent.z()), bits});
   }
-  sortUnique(parents);
-  return parents;
+  return mergeMasks(std::move(parents));
 }
 
 }  // namespace texsynth::lazy

@@ -10,7 +10,9 @@
 #include <numeric>
 #include <string>
 
+#include "texsynth/core/cache_file.h"
 #include "texsynth/core/error.h"
+#include "texsynth/core/hash.h"
 #include "texsynth/core/parallel.h"
 #include "texsynth/exemplar/analysis_cache.h"
 #include "texsynth/exemplar/gaussian_stack.h"
@@ -34,6 +36,7 @@ LazyLevelStats& operator+=(LazyLevelStats& stats, const StepCounts& counts) {
 
 constexpr int kMaxVoxelCoordinate = 1 << 19;
 constexpr std::int64_t kInitChunk = 16;
+constexpr int kMinTorusBlocks = 4;
 
 void require(bool ok, const char* parameter, const std::string& problem) {
   if (!ok) throw ParameterError(parameter, problem);
@@ -65,8 +68,12 @@ IndexBox blocksOfBox(const Vec3i& min, const Vec3i& size) {
           Vec3i(floorDiv(max.x(), kB), floorDiv(max.y(), kB), floorDiv(max.z(), kB))};
 }
 
-void removeCached(std::vector<BlockKey>& keys, const BlockCache& cache) {
-  keys.erase(std::remove_if(keys.begin(), keys.end(), [&](BlockKey k) { return cache.count(k) != 0; }), keys.end());
+// Requested voxels already final in the cache are dropped, and blocks left with none.
+void removeCached(std::vector<BlockMask>& requested, const BlockCache& cache) {
+  for (BlockMask& mask : requested)
+    if (const auto it = cache.find(mask.key); it != cache.end()) mask.voxels &= ~it->second.done;
+  requested.erase(std::remove_if(requested.begin(), requested.end(), [](const BlockMask& m) { return m.voxels == 0; }),
+                  requested.end());
 }
 
 }  // namespace
@@ -98,6 +105,12 @@ void validateLazySolidOptions(const LazySolidOptions& options) {
   require(std::isfinite(options.featureWeight) && options.featureWeight >= 0.0f, "featureWeight",
           "must be finite and >= 0");
   require(std::isfinite(options.jitter) && options.jitter >= 0.0f, "jitter", "must be finite and >= 0");
+  require((options.domainSize.array() >= 0).all() &&
+              ((options.domainSize.array() == 0).all() || (options.domainSize.array() > 0).all()),
+          "domainSize", "must be positive along every axis (or zero for the default domain)");
+  require(options.domainMin.cwiseAbs().maxCoeff() < kMaxVoxelCoordinate &&
+              (options.domainMin + options.domainSize).cwiseAbs().maxCoeff() < kMaxVoxelCoordinate,
+          "domainSize", "the domain must stay within 2^19 voxels of the origin");
 }
 
 LazySolid::LazySolid(const Image& exemplar, const LazySolidOptions& options, LazyOrientation orientation,
@@ -159,6 +172,36 @@ void LazySolid::initialize(const Image& xy, const Image& yz, const Image& zx, Pr
   }
   stats_.assign(std::size_t(options_.levels), {});
   impl_->caches.resize(std::size_t(options_.levels));
+
+  // The coarsest level's torus: the domain in coarsest voxels, one block of margin per side,
+  // whole blocks, at least kMinTorusBlocks a side.
+  const int finestPerCoarsest = 1 << (options_.levels - 1);
+  Vec3i domainMin = options_.domainMin, domainSize = options_.domainSize;
+  if ((domainSize.array() == 0).all()) domainMin.setZero(), domainSize.setConstant(2 * std::max(xy.width, xy.height));
+  for (int a = 0; a < 3; ++a) {
+    const int lo = floorDiv(floorDiv(domainMin[a], finestPerCoarsest), kB) - 1;
+    const int hi = floorDiv(floorDiv(domainMin[a] + domainSize[a] - 1, finestPerCoarsest), kB) + 1;
+    torusMin_[a] = lo * kB;
+    torusSize_[a] = std::max(hi - lo + 1, kMinTorusBlocks) * kB;
+  }
+  coarsestKey_ = coarsestCacheKey(xy, yz, zx);
+}
+
+std::uint64_t LazySolid::coarsestCacheKey(const Image& xy, const Image& yz, const Image& zx) const {
+  if (options_.cacheDirectory.empty() || (orientation_ && options_.orientationKey.empty())) return 0;
+  Hasher hasher;
+  hasher.string("lazy-coarsest").value(kCoarsestCacheFormatVersion);
+  for (const Image* image : {&xy, &yz, &zx})
+    hasher.value(image->width).value(image->height).value(image->channels).vector(image->pixels);
+  for (const Image& mask : options_.featureMasks)
+    hasher.value(mask.width).value(mask.height).value(mask.channels).vector(mask.pixels);
+  const LazySolidOptions& o = options_;
+  hasher.value(o.levels).vector(o.neighborhoodSizes).value(o.coarsestPasses).value(o.trilinearLevels);
+  hasher.value(o.subpassGrid).value(o.subpartSize).value(o.candidateCount).value(o.pcaDimensions).value(o.jitter);
+  hasher.value(o.featureWeight).value(o.seed);
+  for (int a = 0; a < 3; ++a) hasher.value(torusMin_[a]).value(torusSize_[a]);
+  hasher.value(bool(orientation_)).string(o.orientationKey);
+  return hasher.digest();
 }
 
 int LazySolid::colorChannels() const {
@@ -170,51 +213,35 @@ const ExemplarAnalysis& LazySolid::analysis(Plane plane) const {
 }
 
 void LazySolid::synthesize(std::span<const Vec3i> voxels, Progress& progress) {
-  std::vector<BlockKey> blocks;
-  blocks.reserve(voxels.size() / 8 + 1);
+  std::vector<BlockMask> masks;
+  masks.reserve(voxels.size());
   for (const Vec3i& v : voxels) {
     require(v.cwiseAbs().maxCoeff() < kMaxVoxelCoordinate, "voxels", "coordinates must stay below 2^19 in magnitude");
-    blocks.push_back(blockOfVoxel(v));
+    masks.push_back({blockOfVoxel(v), std::uint64_t(1) << voxelSlot(v)});
   }
-  synthesizeBlocks(std::move(blocks), levels() - 1, progress);
+  synthesizeRequested(mergeMasks(std::move(masks)), progress);
 }
 
 void LazySolid::synthesizeBox(const Vec3i& min, const Vec3i& size, Progress& progress) {
   std::vector<BlockKey> blocks;
   appendBox(blocks, blocksOfBox(min, size));
-  synthesizeBlocks(std::move(blocks), levels() - 1, progress);
-}
-
-LazySolid::PlanMargin LazySolid::planMargin(int level) const {
-  // A level's plan for a set of blocks is the union of its plans for each block, and it repeats
-  // with the grid cells: plan one block at every alignment to the cells and take the widest reach.
-  const int alignments = gridded(level) ? std::lcm(options_.gridCellSize, kB) / kB : 1;
-  PlanMargin margin;
-  for (int i = 0; i < alignments; ++i) {
-    const std::vector<BlockKey> deliver = {blockKey(i, i, i)};
-    const LazyDependencyPlan plan = planForLevel(level, deliver);
-    for (BlockKey key : plan.layers.front())
-      for (int a = 0; a < 3; ++a) {
-        margin.below = std::max(margin.below, i - blockIndex(key)[a]);
-        margin.above = std::max(margin.above, blockIndex(key)[a] - i);
-      }
-  }
-  return margin;
-}
-
-void LazySolid::prepareCoarsestLevel(const Vec3i& min, const Vec3i& size, Progress& progress) {
-  // The finest blocks of the box, then level by level the blocks any of them can need.
-  IndexBox box = blocksOfBox(min, size);
-  for (int l = levels() - 1; l >= 1; --l) {
-    const PlanMargin margin = planMargin(l);
-    for (int a = 0; a < 3; ++a) {
-      box.lo[a] = floorDiv(box.lo[a] - margin.below, 2);
-      box.hi[a] = floorDiv(box.hi[a] + margin.above, 2);
+  std::vector<BlockMask> masks;
+  masks.reserve(blocks.size());
+  for (BlockKey key : blocks) {
+    const Vec3i origin = blockIndex(key) * kB;
+    std::uint64_t bits = 0;
+    for (int slot = 0; slot < kBlockVoxels; ++slot) {
+      const Vec3i v = origin + Vec3i(slot % kB, slot / kB % kB, slot / (kB * kB));
+      if ((v.array() >= min.array()).all() && (v.array() < (min + size).array()).all())
+        bits |= std::uint64_t(1) << slot;
     }
+    masks.push_back({key, bits});
   }
-  std::vector<BlockKey> blocks;
-  appendBox(blocks, box);
-  synthesizeBlocks(std::move(blocks), 0, progress);
+  synthesizeRequested(mergeMasks(std::move(masks)), progress);
+}
+
+void LazySolid::prepareCoarsestLevel(Progress& progress) {
+  synthesizeCoarsest(progress);
 }
 
 bool LazySolid::gridded(int level) const {
@@ -242,100 +269,157 @@ LevelContext LazySolid::context(int level) const {
   ctx.triples = &triples_[std::size_t(level)];
   ctx.options = &options_;
   ctx.orientation = &orientation_;
+  ctx.torusMin = torusMin_;
+  ctx.torusSize = torusSize_;
   return ctx;
 }
 
-void LazySolid::synthesizeBlocks(std::vector<BlockKey> blocks, int deliverLevel, Progress& progress) {
-  const int levels = options_.levels;
-  std::sort(blocks.begin(), blocks.end());
-  blocks.erase(std::unique(blocks.begin(), blocks.end()), blocks.end());
+void LazySolid::synthesizeRequested(std::vector<BlockMask> requested, Progress& progress) {
+  const int finest = options_.levels - 1;
+  removeCached(requested, impl_->caches[std::size_t(finest)]);
+  if (requested.empty()) return;
+  if (finest == 0) return synthesizeCoarsest(progress);  // one level: the torus holds everything
 
-  // Plan, from the delivering level down: what each level delivers and what it must start from.
-  std::vector<LazyDependencyPlan> plans(static_cast<std::size_t>(levels));
-  std::vector<BlockKey> deliver = std::move(blocks);
-  removeCached(deliver, impl_->caches[std::size_t(deliverLevel)]);
-  for (int l = deliverLevel; l >= 0 && !deliver.empty(); --l) {
-    plans[std::size_t(l)] = planForLevel(l, deliver);
-    if (l == 0) break;
-    deliver = parentBlocks(plans[std::size_t(l)].layers.front());
-    removeCached(deliver, impl_->caches[std::size_t(l - 1)]);
+  // Plan, from the finest level down to level 1: the voxels each level delivers (the parents of
+  // everything the finer level starts from) and the blocks it must start from. The coarsest
+  // level is the whole torus, whatever is requested.
+  std::vector<LazyDependencyPlan> plans(std::size_t(options_.levels));
+  std::vector<std::vector<BlockMask>> deliver(std::size_t(options_.levels));
+  deliver[std::size_t(finest)] = std::move(requested);
+  for (int l = finest; l >= 1 && !deliver[std::size_t(l)].empty(); --l) {
+    std::vector<BlockKey> keys;
+    for (const BlockMask& mask : deliver[std::size_t(l)]) keys.push_back(mask.key);
+    plans[std::size_t(l)] = planForLevel(l, keys);
+    if (l == 1) break;
+    deliver[std::size_t(l - 1)] = parentMasks(plans[std::size_t(l)].layers.front());
+    removeCached(deliver[std::size_t(l - 1)], impl_->caches[std::size_t(l - 1)]);
   }
+  synthesizeCoarsest(progress);
+  for (int l = 1; l <= finest; ++l)
+    if (!plans[std::size_t(l)].layers.empty())
+      synthesizeLevel(l, plans[std::size_t(l)], false, progress, &deliver[std::size_t(l)]);
+}
 
-  progress.begin("lazy solid synthesis", levels);
-  for (int l = 0; l < levels; ++l) {
-    const LazyDependencyPlan& plan = plans[std::size_t(l)];
-    if (plan.layers.empty()) {
-      progress.advance(1);
-      continue;
+void LazySolid::synthesizeCoarsest(Progress& progress) {
+  BlockCache& cache = impl_->caches[0];
+  if (!cache.empty()) return;
+  LazyLevelStats& stats = stats_[0];
+  const auto started = std::chrono::steady_clock::now();
+  const std::string path = coarsestKey_ ? coarsestCachePath(options_.cacheDirectory, coarsestKey_) : std::string();
+  if (!path.empty()) {
+    if (std::optional<BlockCache> loaded =
+            loadCoarsestLevel(path, coarsestKey_, torusMin_, torusSize_, std::int32_t(triples_[0].pixelCount()))) {
+      cache = std::move(*loaded);
+      stats.fromDiskCache = true;
+      stats.blocksCached = std::int64_t(cache.size());
+      stats.cachedBytes = std::int64_t(cache.size()) * cachedBlockBytes;
+      stats.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+      return;
     }
-    const auto started = std::chrono::steady_clock::now();
-    const LevelContext ctx = context(l);
-    WorkSet current(plan.layers.front());
-    const BlockCache* parents = l > 0 ? &impl_->caches[std::size_t(l - 1)] : nullptr;
-    parallelForChunks(0, std::int64_t(current.keys.size()), kInitChunk, [&](std::int64_t begin, std::int64_t end) {
-      for (std::int64_t i = begin; i < end; ++i) {
-        WorkBlock& block = current.blocks[std::size_t(i)];
-        if (parents)
-          upsampleBlock(ctx, *parents, block);
-        else
-          initializeBlock(ctx, block);
-        finishBlock(ctx, block);
-      }
-    });
-    LazyLevelStats& stats = stats_[std::size_t(l)];
-    stats.voxelsSynthesized += std::int64_t(current.keys.size()) * kBlockVoxels;
-    const LevelSchedule schedule = levelSchedule(options_, l, plan.gridScheme);
-    const int radius = ctx.readRadius();
-    // Per step, the versions its windows read from snapshots (its read tables are rebuilt when it runs).
-    std::vector<std::vector<int>> snapshotVersions;
-    for (std::size_t k = 0; k < schedule.steps.size(); ++k)
-      snapshotVersions.push_back(stepReads(schedule, k, radius).snapshotVersions);
-    if (plan.gridScheme)  // every block stays readable; the windows decide which version is read
-      std::fill(current.lastLayer.begin(), current.lastLayer.end(), std::int32_t(schedule.steps.size()));
-    else
-      for (std::size_t i = 1; i < plan.layers.size(); ++i)
-        for (BlockKey key : plan.layers[i]) current.lastLayer[std::size_t(current.indexOf(key))] = std::int32_t(i);
-    GridPhase phase;
-    for (std::size_t k = 0; k < schedule.steps.size(); ++k) {
-      const CorrectionStep& step = schedule.steps[k];
-      if (k == 0 || schedule.steps[k - 1].pass != step.pass) {
-        // A pass begins: keep its starting version if a window reads it later below the latest,
-        // and free the snapshots no step reads any more.
-        std::vector<int> stillRead;
-        for (std::size_t j = k; j < snapshotVersions.size(); ++j)
-          stillRead.insert(stillRead.end(), snapshotVersions[j].begin(), snapshotVersions[j].end());
-        current.dropSnapshotsExcept(stillRead);
-        if (std::find(stillRead.begin(), stillRead.end(), step.pass - 1) != stillRead.end())
-          current.takeSnapshot(step.pass - 1);
-        stats.peakWorkingBytes = std::max(stats.peakWorkingBytes, workingBytes(current));
-      }
-      if (step.gridPhase >= 0 && (k == 0 || schedule.steps[k - 1].gridPhase != step.gridPhase))
-        phase = gridPhase(current, step.gridPhase == 0 ? plan.primaryCells : plan.dualCells, step.cellSize, step.shift);
-      stats +=
-          correctStep(ctx, current, int(k) + 1, stepReads(schedule, k, radius), step.gridPhase >= 0 ? &phase : nullptr);
+  }
+  LazyDependencyPlan plan;
+  std::vector<BlockKey> keys;
+  appendBox(keys, {(torusMin_.array() / kB).matrix(), ((torusMin_ + torusSize_).array() / kB - 1).matrix()});
+  std::sort(keys.begin(), keys.end());
+  plan.layers = {keys, keys};
+  synthesizeLevel(0, plan, true, progress);
+  if (!path.empty()) detail::writeCacheFile(options_.cacheDirectory, path, serializeCoarsestLevel(cache, coarsestKey_));
+}
+
+void LazySolid::synthesizeLevel(int l, const LazyDependencyPlan& plan, bool torus, Progress& progress,
+                                const std::vector<BlockMask>* exact) {
+  const auto started = std::chrono::steady_clock::now();
+  const LevelContext ctx = context(l);
+  const LevelSchedule schedule = levelSchedule(options_, l, plan.gridScheme);
+  WorkSet current(plan.layers.front());
+  progress.begin("lazy solid: level " + std::to_string(l + 1) + " of " + std::to_string(options_.levels) + ", " +
+                     std::to_string(current.keys.size() * kBlockVoxels) + " voxels",
+                 std::int64_t(schedule.steps.size()) + 1);
+  const BlockCache* parents = l > 0 ? &impl_->caches[std::size_t(l - 1)] : nullptr;
+  parallelForChunks(0, std::int64_t(current.keys.size()), kInitChunk, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t i = begin; i < end; ++i) {
+      WorkBlock& block = current.blocks[std::size_t(i)];
+      if (parents)
+        upsampleBlock(ctx, *parents, block);
+      else
+        initializeBlock(ctx, block);
+      finishBlock(ctx, block);
     }
-    current.snapshots.clear();
-    BlockCache& cache = impl_->caches[std::size_t(l)];
-    for (BlockKey key : plan.layers.back())
-      cache.emplace(key, current.blocks[std::size_t(current.indexOf(key))].triples);
-    stats.blocksCached = std::int64_t(cache.size());
-    stats.cachedBytes = std::int64_t(cache.size()) * cachedBlockBytes;
-    stats.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  });
+  progress.advance(1);
+  LazyLevelStats& stats = stats_[std::size_t(l)];
+  stats.voxelsSynthesized += std::int64_t(current.keys.size()) * kBlockVoxels;
+  const int radius = ctx.readRadius();
+  // Per step, the versions its windows read from snapshots (its read tables are rebuilt when it runs).
+  std::vector<std::vector<int>> snapshotVersions;
+  for (std::size_t k = 0; k < schedule.steps.size(); ++k)
+    snapshotVersions.push_back(stepReads(schedule, k, radius).snapshotVersions);
+  if (plan.gridScheme || torus)  // every block stays readable; the windows decide which version is read
+    std::fill(current.lastLayer.begin(), current.lastLayer.end(), std::int32_t(schedule.steps.size()));
+  else
+    for (std::size_t i = 1; i < plan.layers.size(); ++i)
+      for (BlockKey key : plan.layers[i]) current.lastLayer[std::size_t(current.indexOf(key))] = std::int32_t(i);
+  GridPhase phase;
+  for (std::size_t k = 0; k < schedule.steps.size(); ++k) {
+    const CorrectionStep& step = schedule.steps[k];
+    if (k == 0 || schedule.steps[k - 1].pass != step.pass) {
+      // A pass begins: keep its starting version if a window reads it later below the latest,
+      // and free the snapshots no step reads any more.
+      std::vector<int> stillRead;
+      for (std::size_t j = k; j < snapshotVersions.size(); ++j)
+        stillRead.insert(stillRead.end(), snapshotVersions[j].begin(), snapshotVersions[j].end());
+      current.dropSnapshotsExcept(stillRead);
+      if (std::find(stillRead.begin(), stillRead.end(), step.pass - 1) != stillRead.end())
+        current.takeSnapshot(step.pass - 1);
+      stats.peakWorkingBytes = std::max(stats.peakWorkingBytes, workingBytes(current));
+    }
+    if (step.gridPhase >= 0 && (k == 0 || schedule.steps[k - 1].gridPhase != step.gridPhase))
+      phase = gridPhase(current, step.gridPhase == 0 ? plan.primaryCells : plan.dualCells, step.cellSize, step.shift);
+    bool restricted = step.gridPhase >= 0;
+    if (exact && k + 1 == schedule.steps.size()) {  // nothing reads the last step's other voxels
+      if (!restricted) phase.correct.assign(current.keys.size(), ~std::uint64_t(0));
+      std::vector<std::uint64_t> requested(current.keys.size(), 0);
+      for (const BlockMask& mask : *exact) requested[std::size_t(current.indexOf(mask.key))] = mask.voxels;
+      for (std::size_t i = 0; i < requested.size(); ++i) phase.correct[i] &= requested[i];
+      restricted = true;
+    }
+    stats += correctStep(ctx, current, int(k) + 1, stepReads(schedule, k, radius), restricted ? &phase : nullptr);
     progress.advance(1);
   }
+  current.snapshots.clear();
+  BlockCache& cache = impl_->caches[std::size_t(l)];
+  if (exact) {  // only the requested voxels are final; earlier ones of the same blocks stay
+    for (const BlockMask& mask : *exact) {
+      const TripleBlock& triples = current.blocks[std::size_t(current.indexOf(mask.key))].triples;
+      const auto [it, added] = cache.try_emplace(mask.key, CachedBlock{triples, mask.voxels});
+      if (added) continue;
+      for (int slot = 0; slot < kBlockVoxels; ++slot)
+        if (mask.voxels >> slot & 1) it->second.triples[std::size_t(slot)] = triples[std::size_t(slot)];
+      it->second.done |= mask.voxels;
+    }
+  } else {
+    for (BlockKey key : plan.layers.back())
+      cache.emplace(key, CachedBlock{current.blocks[std::size_t(current.indexOf(key))].triples});
+  }
+  stats.blocksCached = std::int64_t(cache.size());
+  stats.cachedBytes = std::int64_t(cache.size()) * cachedBlockBytes;
+  stats.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   progress.end();
 }
 
 bool LazySolid::ready(const Vec3i& voxel) const {
-  return impl_->caches.back().count(blockOfVoxel(voxel)) != 0;
+  const BlockCache& cache = impl_->caches.back();
+  const auto it = cache.find(blockOfVoxel(levels() == 1 ? context(0).wrapCoarsest(voxel) : voxel));
+  return it != cache.end() && (levels() == 1 || (it->second.done >> voxelSlot(voxel) & 1));
 }
 
 CoordinateTriple LazySolid::triple(const Vec3i& voxel, int level) const {
   TS_CHECK(level >= 0 && level < options_.levels);
   const BlockCache& cache = impl_->caches[std::size_t(level)];
-  const auto it = cache.find(blockOfVoxel(voxel));
-  TS_CHECK_MSG(it != cache.end(), "voxel not synthesized at this level");
-  return it->second[std::size_t(voxelSlot(voxel))];
+  const Vec3i stored = level == 0 ? context(0).wrapCoarsest(voxel) : voxel;
+  const auto it = cache.find(blockOfVoxel(stored));
+  TS_CHECK_MSG(it != cache.end() && (it->second.done >> voxelSlot(stored) & 1), "voxel not synthesized at this level");
+  return it->second.triples[std::size_t(voxelSlot(stored))];
 }
 
 namespace {
@@ -348,10 +432,8 @@ namespace {
 }  // namespace
 
 void LazySolid::color(const Vec3i& voxel, float* out) const {
-  const BlockCache& cache = impl_->caches.back();
-  const auto it = cache.find(blockOfVoxel(voxel));
-  if (it == cache.end()) throwNotSynthesized(voxel);
-  const CoordinateTriple t = it->second[std::size_t(voxelSlot(voxel))];
+  if (!ready(voxel)) throwNotSynthesized(voxel);
+  const CoordinateTriple t = triple(voxel, levels() - 1);
   const int channels = colorChannels();
   const float* a = analysis(Plane::XY).levels.back().image.pixels.data();
   const float* b = analysis(Plane::YZ).levels.back().image.pixels.data();

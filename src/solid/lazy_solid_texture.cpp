@@ -38,17 +38,20 @@ void LazySolidTexture::prepare(std::span<const Vec3f> points, Progress& progress
   solid_->synthesize(voxels, progress);
 }
 
-void LazySolidTexture::prepareDomain(const Box3f& box, Progress& progress) {
+void setLazyDomain(LazySolidOptions& options, const SolidPlacement& placement, const Box3f& box) {
   if (!box.valid()) throw ParameterError("box", "is empty");
+  validatePlacement(placement);
   Vec3i lo = Vec3i::Constant(std::numeric_limits<int>::max()), hi = Vec3i::Constant(std::numeric_limits<int>::min());
   for (int corner = 0; corner < 8; ++corner) {
     const Vec3f p((corner & 1 ? box.max : box.min).x(), (corner & 2 ? box.max : box.min).y(),
                   (corner & 4 ? box.max : box.min).z());
-    checkedExemplarPosition(placement_, p, "box");
-    lo = lo.cwiseMin(voxelOf(p));
-    hi = hi.cwiseMax(voxelOf(p));
+    const Vec3f e = checkedExemplarPosition(placement, p, "box");
+    const Vec3i v(int(std::floor(e.x())), int(std::floor(e.y())), int(std::floor(e.z())));
+    lo = lo.cwiseMin(v);
+    hi = hi.cwiseMax(v);
   }
-  solid_->prepareCoarsestLevel(lo, hi - lo + Vec3i::Ones(), progress);
+  options.domainMin = lo;
+  options.domainSize = hi - lo + Vec3i::Ones();
 }
 
 void LazySolidTexture::evaluateSerial(std::span<const Vec3f> points, std::span<const Vec3f>,

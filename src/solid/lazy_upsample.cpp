@@ -57,7 +57,22 @@ void LevelContext::color(const CoordinateTriple& t, float* out) const {
   const float* a = planes[0]->image.pixels.data() + std::size_t(t.xy) * channels;
   const float* b = planes[1]->image.pixels.data() + std::size_t(t.yz) * channels;
   const float* c = planes[2]->image.pixels.data() + std::size_t(t.zx) * channels;
-  for (int i = 0; i < channels; ++i) out[i] = (a[i] + b[i] + c[i]) * (1.0f / 3.0f);
+  for (int i = 0; i < channels; ++i) {
+    out[i] = a[i];
+    out[kMaxChannels + i] = b[i];
+    out[2 * kMaxChannels + i] = c[i];
+  }
+}
+
+Vec3i LevelContext::wrapCoarsest(const Vec3i& voxel) const {
+  Vec3i wrapped;
+  for (int a = 0; a < 3; ++a) wrapped[a] = torusMin[a] + wrapIndex(std::int64_t(voxel[a]) - torusMin[a], torusSize[a]);
+  return wrapped;
+}
+
+Vec3i LevelContext::storedBlock(const Vec3i& block) const {
+  if (level != 0) return block;
+  return (wrapCoarsest(block * kB).array() / kB).matrix();
 }
 
 void initializeBlock(const LevelContext& ctx, WorkBlock& block) {
@@ -89,9 +104,12 @@ void upsampleBlock(const LevelContext& ctx, const BlockCache& parents, WorkBlock
   for (int slot = 0; slot < kBlockVoxels; ++slot) {
     const Vec3i v = voxelAt(block, slot);
     const Vec3i p(floorDiv(v.x(), 2), floorDiv(v.y(), 2), floorDiv(v.z(), 2));
-    const auto it = parents.find(blockOfVoxel(p));
-    TS_CHECK_MSG(it != parents.end(), "lazy synthesis planned a parent block that was not synthesized");
-    const CoordinateTriple parent = it->second[std::size_t(voxelSlot(p))];
+    const Vec3i stored = ctx.level == 1 ? ctx.wrapCoarsest(p) : p;
+    const auto it = parents.find(blockOfVoxel(stored));
+    const int parentSlot = voxelSlot(stored);
+    TS_CHECK_MSG(it != parents.end() && (it->second.done >> parentSlot & 1),
+                 "lazy synthesis planned a parent voxel that was not synthesized");
+    const CoordinateTriple parent = it->second.triples[std::size_t(parentSlot)];
     // Eq. 3: t_v = h_l (delta - 1/2), delta = v mod 2 (children centred on the parent), taken
     // into the parent's local frame (q^-1 t_v) and added to its triple by eq. 4.
     const Vec3f offset = (v - 2 * p).cast<float>().array() * h - 0.5f * h;
@@ -104,7 +122,7 @@ void upsampleBlock(const LevelContext& ctx, const BlockCache& parents, WorkBlock
 void finishBlock(const LevelContext& ctx, WorkBlock& block) {
   for (int slot = 0; slot < kBlockVoxels; ++slot) {
     block.frames[std::size_t(slot)] = ctx.frame(ctx.level, voxelAt(block, slot));
-    ctx.color(block.triples[std::size_t(slot)], block.colors.data() + std::size_t(slot) * kMaxChannels);
+    ctx.color(block.triples[std::size_t(slot)], block.colors.data() + std::size_t(slot) * kVoxelColors);
   }
 }
 

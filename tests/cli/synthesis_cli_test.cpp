@@ -204,7 +204,19 @@ TEST(SolidCli, LazyWritesASliceAndRejectsWhatItCannotDo) {
   EXPECT_GT(finest["corrections"].get<std::int64_t>(), 0);
   EXPECT_GE(finest["comparisons"].get<std::int64_t>(), finest["corrections"].get<std::int64_t>());
   EXPECT_GE(finest["seconds"].get<double>(), 0.0);
+  EXPECT_FALSE(stats["lazy"][0]["levels"][0]["from_disk_cache"].get<bool>());
+  // The same command again reads the coarsest level from the disk cache and writes the same slice.
+  r = runTexsynth(lazy + "--slice z=0.5 --resolution 12 -o " + dir.file("again.png") + " --stats " +
+                      dir.file("again.json") + " --quiet",
+                  dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_TRUE(nlohmann::json::parse(readFileBytes(dir.file("again.json")))["lazy"][0]["levels"][0]["from_disk_cache"]
+                  .get<bool>());
+  EXPECT_EQ(readFileBytes(dir.file("again.png")), readFileBytes(dir.file("s.png")));
   const std::string out = " --slice z=0.5 -o " + dir.file("x.png");
+  test::expectOneLineError(runTexsynth(lazy + "--candidates 0" + out, dir), 2, "--candidates");
+  test::expectOneLineError(runTexsynth(lazy + "--subpasses 3" + out, dir), 2, "--subpasses");
+  test::expectOneLineError(runTexsynth(lazy + "--color-rule grey" + out, dir), 2, "--color-rule");
   test::expectOneLineError(runTexsynth(lazy + exemplar + out, dir), 2, "EXEMPLAR");  // two exemplars
   test::expectOneLineError(runTexsynth(lazy + "--inner " + exemplar + out, dir), 2, "--inner");
   test::expectOneLineError(

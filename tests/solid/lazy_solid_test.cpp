@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 
 #include "test_support.h"
 #include "texsynth/core/parallel.h"
@@ -55,8 +57,10 @@ void expectRequestIndependent(const LazySolidOptions& options, const LazyOrienta
   alone.synthesize(std::vector<Vec3i>{voxel});
   box.synthesizeBox({0, -8, 0}, {8, 8, 8});
   bigger.synthesizeBox(biggerMin, biggerSize);
-  // Whole blocks are cached: check the requested voxel's block in all three.
-  expectSameTriples(alone, box, {4, -4, 4}, {4, 4, 4});
+  // Only the requested finest voxels are final: check that one against the box.
+  ASSERT_TRUE(alone.ready(voxel));
+  EXPECT_FALSE(alone.ready(voxel + Vec3i(1, 0, 0)));
+  expectSameTriples(alone, box, voxel, {1, 1, 1});
   expectSameTriples(box, bigger, {0, -8, 0}, {8, 8, 8});
   // A later request reuses and agrees with earlier work.
   alone.synthesizeBox({0, -8, 0}, {8, 8, 8});
@@ -146,6 +150,8 @@ TEST(LazySolid, SurfaceCutAndFullVolumeRequestsAgree) {
   options.subpassGrid = 2;
   options.coarsestPasses = 1;
   const Vec3i boxMin(-2, 0, -1), boxSize(16, 16, 16);
+  options.domainMin = boxMin;
+  options.domainSize = boxSize;
   std::vector<Vec3i> shell, cut;
   for (int z = 0; z < 16; ++z)
     for (int y = 0; y < 16; ++y)
@@ -155,7 +161,7 @@ TEST(LazySolid, SurfaceCutAndFullVolumeRequestsAgree) {
         if (v.z() == 5) cut.push_back(v);
       }
   LazySolid model(pattern(), options), volume(pattern(), options), cutAlone(pattern(), options);
-  model.prepareCoarsestLevel(boxMin, boxSize);
+  model.prepareCoarsestLevel();
   const std::int64_t coarsestVoxels = model.stats()[0].voxelsSynthesized;
   model.synthesize(shell);
   model.synthesize(cut);
@@ -169,6 +175,82 @@ TEST(LazySolid, SurfaceCutAndFullVolumeRequestsAgree) {
         ASSERT_EQ(model.triple(at, level), volume.triple(at, level)) << v.transpose() << " level " << level;
       }
   for (const Vec3i& v : cut) ASSERT_EQ(model.triple(v, options.levels - 1), cutAlone.triple(v, options.levels - 1));
+}
+
+// The coarsest level is a whole torus over the domain, request-independent: read back from the
+// disk cache it gives the same bits at every level as synthesized afresh; a corrupted file is
+// synthesized again, and another seed or orientation key does not hit the same file.
+TEST(LazySolid, CachedCoarsestLevelOnDiskGivesBitIdenticalResults) {
+  const test::TempDir cache;
+  LazySolidOptions options = fastOptions();
+  options.cacheDirectory = cache.path();
+  options.domainMin = {-3, 0, 2};
+  options.domainSize = {20, 12, 9};
+  const LazyOrientation turned = constantOrientation(Quatf(Eigen::AngleAxisf(0.4f, Vec3f(1, 2, 3).normalized())));
+  options.orientationKey = "turned 0.4";
+  LazySolid fresh(pattern(), options, turned);
+  fresh.synthesizeBox({0, 0, 0}, {8, 8, 8});
+  EXPECT_FALSE(fresh.stats()[0].fromDiskCache);
+  const Vec3i torus = fresh.coarsestTorusSize();
+  EXPECT_EQ(fresh.stats()[0].voxelsSynthesized, std::int64_t(torus.x()) * torus.y() * torus.z());
+  const auto files = [&] {
+    std::vector<std::filesystem::path> found;
+    for (const auto& entry : std::filesystem::directory_iterator(cache.path()))
+      if (entry.path().extension() == ".tsxc") found.push_back(entry.path());
+    return found;
+  };
+  ASSERT_EQ(files().size(), 1u);
+
+  LazySolid cached(pattern(), options, turned);
+  cached.synthesizeBox({0, 0, 0}, {8, 8, 8});
+  EXPECT_TRUE(cached.stats()[0].fromDiskCache);
+  EXPECT_EQ(cached.stats()[0].voxelsSynthesized, 0);
+  for (int level = 0; level < options.levels; ++level) {
+    const int shift = options.levels - 1 - level;
+    for (int z = 0; z < 8; ++z)
+      for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x) {
+          const Vec3i at(x >> shift, y >> shift, z >> shift);
+          ASSERT_EQ(cached.triple(at, level), fresh.triple(at, level)) << at.transpose() << " level " << level;
+        }
+  }
+
+  {  // a damaged file is a miss: synthesized again, same bits
+    std::fstream file(files().front(), std::ios::in | std::ios::out | std::ios::binary);
+    file.seekp(-5, std::ios::end);
+    file.put('\x7f');
+  }
+  LazySolid repaired(pattern(), options, turned);
+  repaired.synthesize(std::vector<Vec3i>{{3, 4, 5}});
+  EXPECT_FALSE(repaired.stats()[0].fromDiskCache);
+  EXPECT_EQ(repaired.triple({3, 4, 5}, options.levels - 1), fresh.triple({3, 4, 5}, options.levels - 1));
+
+  LazySolidOptions other = options;
+  other.orientationKey = "turned 0.5";
+  LazySolid otherField(pattern(), other, turned);
+  otherField.prepareCoarsestLevel();
+  EXPECT_FALSE(otherField.stats()[0].fromDiskCache);
+  other.orientationKey.clear();  // an orientation without a key is never cached on disk
+  LazySolid unkeyed(pattern(), other, turned);
+  unkeyed.prepareCoarsestLevel();
+  EXPECT_FALSE(unkeyed.stats()[0].fromDiskCache);
+  EXPECT_EQ(files().size(), 2u);
+}
+
+// A request outside the domain reads the coarsest level periodically: it works, and the same
+// voxel agrees whatever else was requested.
+TEST(LazySolid, RequestsOutsideTheDomainWrapTheCoarsestLevel) {
+  LazySolidOptions options = fastOptions();
+  options.domainMin = {0, 0, 0};
+  options.domainSize = {8, 8, 8};
+  LazySolid far(pattern(), options), both(pattern(), options);
+  const Vec3i outside(300, -200, 77);
+  far.synthesize(std::vector<Vec3i>{outside});
+  both.synthesizeBox({0, 0, 0}, {8, 8, 8});
+  both.synthesize(std::vector<Vec3i>{outside});
+  EXPECT_EQ(far.triple(outside, options.levels - 1), both.triple(outside, options.levels - 1));
+  const Vec3i torus = far.coarsestTorusSize();
+  EXPECT_EQ(far.triple({1, 2, 3}, 0), far.triple(Vec3i(1, 2, 3) + torus, 0));
 }
 
 // Per-voxel reach of the grid plan: a delivered block's dual cells, their reach in primary

@@ -4,6 +4,8 @@
 // upsampling, correction). Not a stable API.
 #include <array>
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
@@ -18,6 +20,9 @@ namespace texsynth::lazy {
 constexpr int kB = LazySolid::kBlock;
 constexpr int kBlockVoxels = kB * kB * kB;
 constexpr int kMaxChannels = 8;
+// A voxel's colours: each plane's exemplar colour at its triple (kMaxChannels per plane), so a
+// plane's neighbourhood is matched against that plane's exemplar in its own colours.
+constexpr int kVoxelColors = 3 * kMaxChannels;
 constexpr int kCoordinateBias = 1 << 20;  // |voxel| < 2^20 keeps block indices in 21 bits
 
 using BlockKey = std::uint64_t;
@@ -49,14 +54,25 @@ struct IndexBox {
 void appendBox(std::vector<BlockKey>& keys, const IndexBox& box);
 
 using TripleBlock = std::array<CoordinateTriple, kBlockVoxels>;
-using BlockCache = std::unordered_map<BlockKey, TripleBlock>;
+// A finished block of a level's cache: its triples and which of them are final (bit per slot).
+// Coarser levels finish whole blocks; the finest finishes only the voxels requested.
+struct CachedBlock {
+  TripleBlock triples{};
+  std::uint64_t done = ~std::uint64_t(0);
+};
+using BlockCache = std::unordered_map<BlockKey, CachedBlock>;
+// Requested voxels by block: sorted, unique keys, each with its bit per slot.
+struct BlockMask {
+  BlockKey key = 0;
+  std::uint64_t voxels = 0;
+};
 
-// A block while its level is being synthesized: triples, their colours at the level (mean of
-// the three planes' stack images, all channels) and each voxel's local frame.
+// A block while its level is being synthesized: triples, their colours at the level (each
+// plane's stack image at its coordinate, all channels) and each voxel's local frame.
 struct WorkBlock {
   Vec3i origin = Vec3i::Zero();  // voxel at slot 0
   TripleBlock triples{};
-  std::array<float, kBlockVoxels * kMaxChannels> colors{};
+  std::array<float, kBlockVoxels * kVoxelColors> colors{};
   std::array<Mat3f, kBlockVoxels> frames;  // columns: local axes in grid space
 };
 
@@ -71,7 +87,7 @@ struct WorkSet {
   // state its phase began from): each block's triples and colours after pass `version`.
   struct Snapshot {
     TripleBlock triples;
-    std::array<float, kBlockVoxels * kMaxChannels> colors;
+    std::array<float, kBlockVoxels * kVoxelColors> colors;
   };
   struct Version {
     int version = 0;
@@ -117,8 +133,11 @@ LazyDependencyPlan planLevel(const std::vector<BlockKey>& deliver, const std::ve
 // readRadius around the primary cells. The dependent set grows by about 2 (M + readRadius) per
 // side, whatever the number of passes and subpasses. dualPhase false: primary cells only.
 LazyDependencyPlan planGridLevel(const std::vector<BlockKey>& deliver, int cellSize, int readRadius, bool dualPhase);
-// Sorted, unique parent blocks (the coarser level) of `blocks`: block b reads parents in b/2.
-std::vector<BlockKey> parentBlocks(const std::vector<BlockKey>& blocks);
+// Sorted by key, one entry per block, the bits of each block's masks or-ed together.
+std::vector<BlockMask> mergeMasks(std::vector<BlockMask> masks);
+// The parent voxels (the coarser level) of every voxel of `blocks`, by parent block: block b's
+// voxels read the 2^3 voxels at the corner 2 (b mod 2) of parent block floor(b / 2).
+std::vector<BlockMask> parentMasks(const std::vector<BlockKey>& blocks);
 // Everything one level's kernels need.
 struct LevelContext {
   int level = 0, levels = 1;
@@ -129,6 +148,9 @@ struct LevelContext {
   const CandidateTriples* triples = nullptr;
   const LazySolidOptions* options = nullptr;
   const LazyOrientation* orientation = nullptr;
+  // The coarsest level's torus (coarsest voxels, multiples of kB): its voxel v is stored at
+  // wrapCoarsest(v), and its corrections read across the torus' sides.
+  Vec3i torusMin = Vec3i::Zero(), torusSize = Vec3i::Zero();
 
   // Radius (voxels) of everything a correction reads: the rotated neighbourhood and the 3x3
   // candidate sources; sqrt(2) * N/2 when a field may rotate the planes, one more where
@@ -139,8 +161,12 @@ struct LevelContext {
   bool integrated() const;
   // Local frame of voxel v at this level (identity without orientation).
   Mat3f frame(int level, const Vec3i& v) const;
-  // Colour (all channels) of a triple at this level into out[channels].
+  // Colours (all channels) of a triple at this level, plane p's at out[p * kMaxChannels].
   void color(const CoordinateTriple& t, float* out) const;
+  // A coarsest-level voxel's place on the torus.
+  Vec3i wrapCoarsest(const Vec3i& voxel) const;
+  // Where this level stores block `block` (wrapped onto the torus at the coarsest level).
+  Vec3i storedBlock(const Vec3i& block) const;
 };
 
 // Fills `block` (origin set) at the coarsest level: tiled candidate slabs, T([q^-1 v]).
@@ -193,6 +219,14 @@ StepReads stepReads(const LevelSchedule& schedule, std::size_t k, int radius);
 // Voxel by voxel (D^3 per corrected voxel), so for checking the block planners on small requests.
 std::vector<std::vector<Vec3i>> windowDependencies(const LevelSchedule& schedule, const std::vector<Vec3i>& deliver,
                                                    int radius);
+
+// The disk cache of a coarsest level (one torus): "<dir>/coarsest-<key>.tsxc", its blocks'
+// triples in key order; loading checks the envelope, the torus and every index (< pixelCount).
+inline constexpr std::uint32_t kCoarsestCacheFormatVersion = 1;
+std::string coarsestCachePath(const std::string& cacheDirectory, std::uint64_t key);
+std::string serializeCoarsestLevel(const BlockCache& cache, std::uint64_t key);
+std::optional<BlockCache> loadCoarsestLevel(const std::string& path, std::uint64_t key, const Vec3i& torusMin,
+                                            const Vec3i& torusSize, std::int32_t pixelCount);
 
 // One phase (primary or dual) of grid correction: per block of the work set the voxels (bit per
 // slot) lying in the phase's planned cells (sorted keys of cell indices), the only ones it corrects.

@@ -3,8 +3,10 @@
 // rotation) to the LazyOrientation function that LazySolid takes, so lazy_solid.h needs no
 // field types.
 #include <memory>
+#include <string>
 #include <vector>
 
+#include "texsynth/core/hash.h"
 #include "texsynth/field/rotation_field.h"
 #include "texsynth/solid/lazy_solid.h"
 #include "texsynth/solid/solid_texture.h"
@@ -20,6 +22,17 @@ inline LazyOrientation lazyOrientationFromField(const RotationField& field, cons
     const Vec3f world = placement.origin + finestPosition / placement.pixelsPerUnit;
     return (*pyramid)[std::size_t(levels - 1 - level)].sample(world);
   };
+}
+
+// LazySolidOptions::orientationKey for lazyOrientationFromField(field, placement, levels): a
+// digest of the field's grid and rotations and of the placement.
+inline std::string lazyOrientationKey(const RotationField& field, const SolidPlacement& placement, int levels) {
+  Hasher hasher;
+  const FieldGrid& grid = field.grid();
+  hasher.string("rotation-field").value(grid.spacing).value(placement.pixelsPerUnit).value(levels);
+  for (int a = 0; a < 3; ++a) hasher.value(grid.origin[a]).value(grid.nodes[a]).value(placement.origin[a]);
+  for (const Quatf& q : field.rotations()) hasher.value(q.w()).value(q.x()).value(q.y()).value(q.z());
+  return hasher.hex();
 }
 
 // One rotation everywhere (tests, slab demos).

@@ -7,10 +7,12 @@
 // s^3 subpasses matching three field-aligned N x N neighbourhoods in PCA space against candidate
 // triples gathered from the neighbours.
 //
-// Determinism: a voxel's triple depends only on (seed, voxel, level, pass). A request is planned
-// finest to coarsest as sets of 4^3-voxel blocks: under the standard pass/subpass scheme each
-// level grows by its full correction reach; under dual-grid correction (§5.3, the default above
-// the coarsest level) by whole M^3 cells plus the read radius. So the same voxel gets the same
+// Determinism: a voxel's triple depends only on (seed, domain, voxel, level, pass). The coarsest
+// level is request-independent: synthesized once, whole, on a torus covering the domain (the
+// paper synthesizes it over the whole volume), and cached in memory and on disk. Finer levels are
+// planned per request, finest to coarsest, as sets of 4^3-voxel blocks: under the standard
+// pass/subpass scheme each level grows by its full correction reach; under dual-grid correction
+// (§5.3, the default) by whole M^3 cells plus the read radius. So the same voxel gets the same
 // triple whatever was requested, for any thread count. Finished blocks of every level are cached
 // and reused by later requests.
 #include <cstdint>
@@ -31,6 +33,7 @@ namespace texsynth {
 namespace lazy {
 struct LevelContext;
 struct LazyDependencyPlan;
+struct BlockMask;
 }  // namespace lazy
 
 struct LazySolidOptions {
@@ -40,15 +43,19 @@ struct LazySolidOptions {
   // N per level, coarsest first; the last entry serves every finer level (paper: 7 at the
   // coarsest, 9 elsewhere). Odd, >= 3.
   std::vector<int> neighborhoodSizes = {7, 9};
-  // Correction passes per level (paper: 2).
-  int passes = 2;
+  // Correction passes per level above the coarsest (paper: 2). Each pass widens what a request
+  // depends on by the read radius: one pass keeps the first picture of a model within seconds
+  // (walnut on the elephant: 5 s instead of 32 s with 2) and slices crisper, at 7-10% higher
+  // coherence (64^3 volumes of GIMP pink marble and burlap).
+  int passes = 1;
   // Dual-grid correction (§5.3) on every level but the coarsest: ceil(P/2) passes in which a
   // voxel reads only its own M^3 cell's current state (and the upsampled state elsewhere), then
   // floor(P/2) passes on the dual cells (shifted by M/2) reading the first phase's result
   // elsewhere. The dependent set then grows by about 2 (M + N/sqrt 2) voxels per side instead of
-  // passes * s^3 * N/2 (paper's setting). false: the standard scheme (every voxel reads its
-  // neighbours' latest state).
-  bool dualGrid = true;
+  // passes * s^3 * N/2 (paper's setting, s = 2). false (default): the standard scheme (every voxel
+  // reads its neighbours' latest state), which with s = 1 grows by only passes * N/sqrt 2: 4-6x
+  // fewer voxels for a surface or a cut than the grids, at the same slice quality.
+  bool dualGrid = false;
   // M, the cell side in voxels (paper: 10-15). Even (the dual cells are shifted by M/2), in [4, 32].
   int gridCellSize = 12;
   // Correction passes at the coarsest level (paper: "3-5 correction passes ... without
@@ -58,16 +65,19 @@ struct LazySolidOptions {
   // along the field's local axes (numerical integration, so the neighbourhood bends with the
   // field) and reading colours trilinearly; finer levels use the centre voxel's frame and the
   // nearest voxel (§4.3: "trilinear interpolation in coarse levels and nearest neighbor in
-  // finer levels"). Only matters with an orientation. >= 0.
-  int trilinearLevels = 2;
+  // finer levels"). Only matters with an orientation. >= 0. Default 1: the coarsest level only
+  // (synthesized once per model and cached on disk); an integrated correction costs about 10x
+  // a nearest one, which on level 1 made a sketched model's first picture take a minute.
+  int trilinearLevels = 1;
   // s: each pass corrects the s^3 voxel classes (x mod s, y mod s, z mod s) in turn (paper:
-  // s^3 = 8). 1 corrects all voxels at once. In {1, 2}.
-  int subpassGrid = 2;
+  // s^3 = 8). 1 (default) corrects all voxels at once from the state before the pass. In {1, 2}.
+  int subpassGrid = 1;
   // K: the coarsest level is initialized per K^3 subpart (paper: 64), each part's slabs
   // warped about its own centre and shifted by its own random offset. >= 1.
   int subpartSize = 64;
-  // N_T candidate triples per exemplar pixel (paper: 12).
-  int candidateCount = 12;
+  // N_T candidate triples per exemplar pixel (paper: 12). 6: the same slice quality on 128^3
+  // volumes of GIMP pink marble and granite (bench/lazy_solid_table.sh) at half the comparisons.
+  int candidateCount = 6;
   // PCA dimensions per plane (paper: "about 20").
   int pcaDimensions = 20;
   // Jitter r_l of L&H 2005 (not in the sketch-guided paper): the upsampled triple moves by
@@ -77,8 +87,10 @@ struct LazySolidOptions {
   // Final colour of a voxel from the three exemplar pixels of its finest triple: their mean
   // (each plane's texture contributes equally; soft where the three disagree) or their medoid
   // (the one with the least L1 colour distance to the other two, a real exemplar colour).
+  // Medoid by default: the mean turned slices grey and soft (sharpness 0.59 against 0.66 for the
+  // medoid on a 64^3 volume of GIMP pink marble).
   enum class ColorRule { Mean, Medoid };
-  ColorRule colorRule = ColorRule::Mean;
+  ColorRule colorRule = ColorRule::Medoid;
   // Feature masks (§4: "a further feature component ... high intensity to indicate feature
   // curves", for regular textures such as bricks): none, one for all planes, or one per plane
   // (xy, yz, zx), each the size of its exemplar. Matching then adds featureWeight times the
@@ -86,13 +98,22 @@ struct LazySolidOptions {
   std::vector<Image> featureMasks;
   float featureWeight = 1.0f;
   std::uint64_t seed = 1;
-  // Directory of the exemplar-analysis and candidate-triple caches; empty = no disk cache.
+  // The domain, in finest-level voxels: [domainMin, domainMin + domainSize), e.g. a model's box.
+  // The coarsest level is synthesized whole on a torus just larger than it (a margin of one
+  // block per side, rounded up to blocks), so its cost is bounded by the domain, not by what is
+  // requested; voxels outside read it periodically. A zero size: a cube of two exemplar widths
+  // from the origin. Results depend on the domain: keep it fixed for a model.
+  Vec3i domainMin = Vec3i::Zero(), domainSize = Vec3i::Zero();
+  // Identifies the orientation function (e.g. a digest of its field and placement) in the disk
+  // cache key of the coarsest level; with an orientation and no key that level is not cached on disk.
+  std::string orientationKey;
+  // Directory of the exemplar-analysis, candidate-triple and coarsest-level caches; empty = no disk cache.
   std::string cacheDirectory;
 };
 
 // Throws ParameterError naming the bad option ("levels", "neighborhoodSizes", "passes",
 // "subpassGrid", "subpartSize", "candidateCount", "pcaDimensions", "jitter", "coarsestPasses",
-// "trilinearLevels", "featureMasks", "featureWeight", "gridCellSize").
+// "trilinearLevels", "featureMasks", "featureWeight", "gridCellSize", "domainSize").
 void validateLazySolidOptions(const LazySolidOptions& options);
 
 // The local frame (global -> local rotation, as RotationField) at a position of `level`
@@ -112,6 +133,7 @@ struct LazyLevelStats {
   // and what its cache of finished triples holds now (kept for later requests).
   std::int64_t peakWorkingBytes = 0;
   std::int64_t cachedBytes = 0;
+  bool fromDiskCache = false;  // the coarsest level: read from the disk cache instead of synthesized
 };
 
 class LazySolid {
@@ -141,12 +163,12 @@ class LazySolid {
   void synthesize(std::span<const Vec3i> voxels, Progress& progress = noProgress());
   // Every voxel of the box [min, min + size).
   void synthesizeBox(const Vec3i& min, const Vec3i& size, Progress& progress = noProgress());
-  // Synthesizes and caches the coarsest level wherever a request inside the finest-level box
-  // [min, min + size) can need it (the paper synthesizes the coarsest level of the whole volume
-  // around the object). Later surfaces and cuts inside the box then start from cached coarse
-  // triples instead of regrowing the coarsest level's unrestricted reach each time. Results do
-  // not change: a voxel's triple never depends on what was requested.
-  void prepareCoarsestLevel(const Vec3i& min, const Vec3i& size, Progress& progress = noProgress());
+  // Synthesizes (or reads from the disk cache) the coarsest level's torus now; the first request
+  // does it otherwise. Results do not change: a voxel's triple never depends on what was requested.
+  void prepareCoarsestLevel(Progress& progress = noProgress());
+  // The coarsest level's torus, in coarsest-level voxels (multiples of kBlock).
+  Vec3i coarsestTorusMin() const { return torusMin_; }
+  Vec3i coarsestTorusSize() const { return torusSize_; }
 
   // True if the finest-level voxel has been synthesized.
   bool ready(const Vec3i& voxel) const;
@@ -161,17 +183,22 @@ class LazySolid {
 
  private:
   void initialize(const Image& xy, const Image& yz, const Image& zx, Progress& progress);
-  // Synthesizes `blocks` of level `deliverLevel` (and what they need on coarser levels).
-  void synthesizeBlocks(std::vector<std::uint64_t> blocks, int deliverLevel, Progress& progress);
+  // Digest of everything the coarsest level depends on (0: not cacheable on disk).
+  std::uint64_t coarsestCacheKey(const Image& xy, const Image& yz, const Image& zx) const;
+  // The coarsest level, whole, on its torus (from the disk cache when possible).
+  void synthesizeCoarsest(Progress& progress);
+  // Runs one level's synthesis for a plan (upsampling or initialization, then its corrections)
+  // and caches the plan's delivered blocks; `torus`: the coarsest level's whole torus. With
+  // `exact` (the voxels the level delivers), the last step corrects only those voxels, and only
+  // they are cached as final.
+  void synthesizeLevel(int level, const lazy::LazyDependencyPlan& plan, bool torus, Progress& progress,
+                       const std::vector<lazy::BlockMask>* exact = nullptr);
+  // Synthesizes the requested finest voxels (and what they need on coarser levels).
+  void synthesizeRequested(std::vector<lazy::BlockMask> requested, Progress& progress);
   // True where the level runs dual-grid correction (every level but the coarsest, if enabled).
   bool gridded(int level) const;
   // The dependency plan of one level for blocks it must deliver (lazy_blocks.h).
   lazy::LazyDependencyPlan planForLevel(int level, const std::vector<std::uint64_t>& deliver) const;
-  // How many blocks a level's plan reaches beyond a delivered block, at most, per side.
-  struct PlanMargin {
-    int below = 0, above = 0;
-  };
-  PlanMargin planMargin(int level) const;
   lazy::LevelContext context(int level) const;
 
   LazySolidOptions options_;
@@ -179,6 +206,8 @@ class LazySolid {
   std::vector<ExemplarAnalysis> analyses_;  // 1 (shared) or 3
   std::vector<CandidateTriples> triples_;   // per level
   std::vector<LazyLevelStats> stats_;
+  Vec3i torusMin_ = Vec3i::Zero(), torusSize_ = Vec3i::Zero();
+  std::uint64_t coarsestKey_ = 0;
   std::unique_ptr<Impl> impl_;  // the per-level block caches
 };
 

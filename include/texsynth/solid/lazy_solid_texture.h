@@ -12,6 +12,11 @@
 
 namespace texsynth {
 
+// Sets options.domainMin / domainSize to the finest voxels of `box` (world units) under
+// `placement`: the domain the coarsest level is synthesized over. ParameterError("box", ...) for
+// an empty box or one too far from the placement origin.
+void setLazyDomain(LazySolidOptions& options, const SolidPlacement& placement, const Box3f& box);
+
 class LazySolidTexture : public SolidTexture {
  public:
   // Throws ParameterError("solid", ...) for a null solid, ("placement.*", ...) for a bad placement.
@@ -24,10 +29,6 @@ class LazySolidTexture : public SolidTexture {
   // ("points", ...) for non-finite points or points too far from the placement origin.
   void prepare(std::span<const Vec3f> points, Progress& progress = noProgress()) override;
   bool preparesOnDemand() const override { return true; }
-  // Caches the coarsest level for every request within `box` (world units), so that surfaces
-  // and cuts inside it reuse it (LazySolid::prepareCoarsestLevel). ParameterError("box", ...)
-  // for an empty box or one too far from the placement origin.
-  void prepareDomain(const Box3f& box, Progress& progress = noProgress());
   // The finest voxel of a point.
   Vec3i voxelOf(const Vec3f& point) const;
 

@@ -1,0 +1,28 @@
+#pragma once
+// The demo's lazy solid section: a rotation field designed from one sketch curve laid over the
+// mesh, the lazy solid following it rendered (first picture), then the mesh cut open (a new cut
+// synthesizes only the voxels it exposes), timed per level.
+#include <cstdint>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "texsynth/core/image.h"
+#include "texsynth/core/mesh.h"
+#include "texsynth/render/render_mesh.h"
+
+namespace texsynth::cli {
+
+// Writes lazy_solid.png (the views, then the cut) through `out`; returns the report's
+// "lazy_solid" section.
+nlohmann::json demoLazySolid(const Mesh& mesh, const Image& exemplar, const std::string& exemplarName,
+                             std::uint64_t seed, const std::string& cacheDirectory, const RenderOptions& render,
+                             const std::vector<std::pair<float, float>>& views,
+                             const std::function<std::string(const std::string&)>& out);
+
+// That section as markdown.
+std::string lazySolidMarkdown(const nlohmann::json& lazy);
+
+}  // namespace texsynth::cli
