@@ -7,7 +7,7 @@
 # added, and per level its peak working memory and final cache size.
 # Usage: bench/lazy_solid_cut.sh [BUILD_DIR] [OUTPUT_DIR] [--resolution R] [--cut AXIS=F]...
 #        [--mesh MESH] [--exemplar PAT] [-- extra lazy flags]
-# Defaults: R 512, cuts z=0.5 and x=0.5, the bunny, pink_marble, the paper's defaults.
+# Defaults: R 512, cuts z=0.5 and x=0.5, the bunny, pink_marble, texsynth's lazy defaults.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 source bench/lazy_bench_args.sh

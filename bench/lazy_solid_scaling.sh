@@ -5,7 +5,7 @@
 # comparisons and seconds of `--stats`.
 # Usage: bench/lazy_solid_scaling.sh [BUILD_DIR] [OUTPUT_DIR] [--volume RES]... [--surface RES]...
 #        [--mesh MESH] [--exemplar PAT] [-- extra lazy flags]
-# Defaults: --volume 128 --surface 256, the bunny, pink_marble, the paper's defaults.
+# Defaults: --volume 128 --surface 256, the bunny, pink_marble, texsynth's lazy defaults.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 source bench/lazy_bench_args.sh

@@ -2,6 +2,7 @@
 // must produce so that the delivered blocks are exact (the standard pass/subpass scheme and grid
 // correction), and the grid phases' voxels and history snapshots of a level's work set.
 #include <algorithm>
+#include <unordered_map>
 
 #include "texsynth/core/error.h"
 #include "texsynth/core/parallel.h"
@@ -79,6 +80,53 @@ LazyDependencyPlan planLevel(const std::vector<BlockKey>& deliver, const std::ve
 }
 
 namespace {
+
+// A mask's 4 bits along `axis` at in-block coordinates (u, v) of the other two axes (in order).
+int slotOf(int axis, int along, int u, int v) {
+  Vec3i local;
+  local[axis] = along;
+  local[(axis + 1) % 3] = u;
+  local[(axis + 2) % 3] = v;
+  return (local.z() * kB + local.y()) * kB + local.x();
+}
+
+// Every voxel within `radius` of a masked one along `axis` (rows of 4 bits, shifted in 64-bit
+// words, so the cost is per block and row, not per voxel and offset).
+std::vector<BlockMask> dilateAlong(const std::vector<BlockMask>& masks, int axis, int radius) {
+  TS_CHECK(radius >= 0 && radius <= 24);
+  constexpr int kOrigin = 28;  // the block's row sits at bits 28..31; rows up to 24 voxels away fit
+  std::unordered_map<BlockKey, std::uint64_t> grown;
+  grown.reserve(masks.size() * 3);
+  const int reach = (radius + kB - 1) / kB;
+  for (const BlockMask& mask : masks) {
+    const Vec3i block = blockIndex(mask.key);
+    std::uint64_t out[16] = {};  // per target block offset -reach..reach (<= 7 each side)
+    for (int u = 0; u < kB; ++u)
+      for (int v = 0; v < kB; ++v) {
+        std::uint64_t row = 0;
+        for (int i = 0; i < kB; ++i) row |= ((mask.voxels >> slotOf(axis, i, u, v)) & 1) << i;
+        if (!row) continue;
+        std::uint64_t spread = 0;
+        for (int d = -radius; d <= radius; ++d) spread |= d >= 0 ? (row << kOrigin) << d : (row << kOrigin) >> -d;
+        for (int k = -reach; k <= reach; ++k) {
+          const std::uint64_t bits = (spread >> (kOrigin + kB * k)) & 0xf;
+          for (int i = 0; i < kB; ++i)
+            if (bits >> i & 1) out[k + reach] |= std::uint64_t(1) << slotOf(axis, i, u, v);
+        }
+      }
+    for (int k = -reach; k <= reach; ++k) {
+      if (!out[k + reach]) continue;
+      Vec3i target = block;
+      target[axis] += k;
+      grown[blockKey(target.x(), target.y(), target.z())] |= out[k + reach];
+    }
+  }
+  std::vector<BlockMask> result;
+  result.reserve(grown.size());
+  for (const auto& [key, voxels] : grown) result.push_back({key, voxels});
+  std::sort(result.begin(), result.end(), [](const BlockMask& a, const BlockMask& b) { return a.key < b.key; });
+  return result;
+}
 
 // The voxels [lo, hi] of an index box of `size`-voxel units whose origin is shifted by -shift.
 IndexBox voxelsOf(const Vec3i& index, int size, int shift) {
@@ -183,6 +231,45 @@ std::vector<BlockMask> mergeMasks(std::vector<BlockMask> masks) {
       merged.push_back(m);
   }
   return merged;
+}
+
+std::vector<BlockMask> dilateMasks(const std::vector<BlockMask>& masks, int radius) {
+  std::vector<BlockMask> current = masks;
+  for (int axis = 0; axis < 3; ++axis) current = dilateAlong(current, axis, radius);
+  return current;
+}
+
+LazyDependencyPlan planExactLevel(const std::vector<BlockMask>& deliver, int steps, int readRadius) {
+  LazyDependencyPlan plan;
+  plan.voxels.resize(std::size_t(steps) + 1);
+  plan.voxels[std::size_t(steps)] = deliver;
+  for (int i = steps; i > 0; --i)
+    plan.voxels[std::size_t(i) - 1] = dilateMasks(plan.voxels[std::size_t(i)], readRadius);
+  for (const std::vector<BlockMask>& layer : plan.voxels) {
+    plan.layers.emplace_back();
+    for (const BlockMask& mask : layer) plan.layers.back().push_back(mask.key);
+  }
+  return plan;
+}
+
+std::vector<BlockMask> parentMasks(const std::vector<BlockMask>& voxels) {
+  // Voxel v's parent is floor(v / 2): a block's 2^3 corners map onto 2^3 corner voxels' parents.
+  std::vector<BlockMask> parents;
+  parents.reserve(voxels.size());
+  for (const BlockMask& mask : voxels) {
+    const Vec3i b = blockIndex(mask.key);
+    const Vec3i parent(floorDiv(b.x(), 2), floorDiv(b.y(), 2), floorDiv(b.z(), 2));
+    const Vec3i corner = 2 * (b - 2 * parent);
+    std::uint64_t bits = 0;
+    for (int slot = 0; slot < kBlockVoxels; ++slot) {
+      if (!(mask.voxels >> slot & 1)) continue;
+      const Vec3i local(slot % kB / 2, slot / kB % kB / 2, slot / (kB * kB) / 2);
+      const Vec3i at = corner + local;
+      bits |= std::uint64_t(1) << ((at.z() * kB + at.y()) * kB + at.x());
+    }
+    parents.push_back({blockKey(parent.x(), parent.y(), parent.z()), bits});
+  }
+  return mergeMasks(std::move(parents));
 }
 
 std::vector<BlockMask> parentMasks(const std::vector<BlockKey>& blocks) {

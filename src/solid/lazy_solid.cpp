@@ -4,6 +4,7 @@
 #include "texsynth/solid/lazy_solid.h"
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -248,6 +249,10 @@ bool LazySolid::gridded(int level) const {
   return options_.dualGrid && level > 0 && options_.passes > 0;
 }
 
+bool LazySolid::exactPlans(int level) const {
+  return level > 0 && !gridded(level) && options_.subpassGrid == 1;
+}
+
 LazyDependencyPlan LazySolid::planForLevel(int level, const std::vector<BlockKey>& deliver) const {
   if (gridded(level))
     return planGridLevel(deliver, options_.gridCellSize, context(level).readRadius(), options_.passes >= 2);
@@ -289,9 +294,12 @@ void LazySolid::synthesizeRequested(std::vector<BlockMask> requested, Progress& 
   for (int l = finest; l >= 1 && !deliver[std::size_t(l)].empty(); --l) {
     std::vector<BlockKey> keys;
     for (const BlockMask& mask : deliver[std::size_t(l)]) keys.push_back(mask.key);
-    plans[std::size_t(l)] = planForLevel(l, keys);
+    plans[std::size_t(l)] = exactPlans(l)
+                                ? planExactLevel(deliver[std::size_t(l)], options_.passes, context(l).readRadius())
+                                : planForLevel(l, keys);
     if (l == 1) break;
-    deliver[std::size_t(l - 1)] = parentMasks(plans[std::size_t(l)].layers.front());
+    deliver[std::size_t(l - 1)] = exactPlans(l) ? parentMasks(plans[std::size_t(l)].voxels.front())
+                                                : parentMasks(plans[std::size_t(l)].layers.front());
     removeCached(deliver[std::size_t(l - 1)], impl_->caches[std::size_t(l - 1)]);
   }
   synthesizeCoarsest(progress);
@@ -336,19 +344,27 @@ void LazySolid::synthesizeLevel(int l, const LazyDependencyPlan& plan, bool toru
                      std::to_string(current.keys.size() * kBlockVoxels) + " voxels",
                  std::int64_t(schedule.steps.size()) + 1);
   const BlockCache* parents = l > 0 ? &impl_->caches[std::size_t(l - 1)] : nullptr;
+  // An exact plan makes and corrects only the voxels it needs (per block, bit per slot).
+  const auto neededAt = [&](std::size_t layer) {
+    std::vector<std::uint64_t> bits(current.keys.size(), plan.voxels.empty() ? ~std::uint64_t(0) : 0);
+    if (!plan.voxels.empty())
+      for (const BlockMask& mask : plan.voxels[layer]) bits[std::size_t(current.indexOf(mask.key))] = mask.voxels;
+    return bits;
+  };
+  const std::vector<std::uint64_t> made = neededAt(0);
   parallelForChunks(0, std::int64_t(current.keys.size()), kInitChunk, [&](std::int64_t begin, std::int64_t end) {
     for (std::int64_t i = begin; i < end; ++i) {
       WorkBlock& block = current.blocks[std::size_t(i)];
       if (parents)
-        upsampleBlock(ctx, *parents, block);
+        upsampleBlock(ctx, *parents, block, made[std::size_t(i)]);
       else
         initializeBlock(ctx, block);
-      finishBlock(ctx, block);
+      finishBlock(ctx, block, made[std::size_t(i)]);
     }
   });
   progress.advance(1);
   LazyLevelStats& stats = stats_[std::size_t(l)];
-  stats.voxelsSynthesized += std::int64_t(current.keys.size()) * kBlockVoxels;
+  for (std::uint64_t bits : made) stats.voxelsSynthesized += std::popcount(bits);
   const int radius = ctx.readRadius();
   // Per step, the versions its windows read from snapshots (its read tables are rebuilt when it runs).
   std::vector<std::vector<int>> snapshotVersions;
@@ -376,7 +392,10 @@ void LazySolid::synthesizeLevel(int l, const LazyDependencyPlan& plan, bool toru
     if (step.gridPhase >= 0 && (k == 0 || schedule.steps[k - 1].gridPhase != step.gridPhase))
       phase = gridPhase(current, step.gridPhase == 0 ? plan.primaryCells : plan.dualCells, step.cellSize, step.shift);
     bool restricted = step.gridPhase >= 0;
-    if (exact && k + 1 == schedule.steps.size()) {  // nothing reads the last step's other voxels
+    if (!plan.voxels.empty()) {  // an exact plan: the voxels needed after this step
+      phase.correct = neededAt(k + 1);
+      restricted = true;
+    } else if (exact && k + 1 == schedule.steps.size()) {  // nothing reads the last step's other voxels
       if (!restricted) phase.correct.assign(current.keys.size(), ~std::uint64_t(0));
       std::vector<std::uint64_t> requested(current.keys.size(), 0);
       for (const BlockMask& mask : *exact) requested[std::size_t(current.indexOf(mask.key))] = mask.voxels;

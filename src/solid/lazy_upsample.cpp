@@ -99,9 +99,10 @@ void initializeBlock(const LevelContext& ctx, WorkBlock& block) {
   }
 }
 
-void upsampleBlock(const LevelContext& ctx, const BlockCache& parents, WorkBlock& block) {
+void upsampleBlock(const LevelContext& ctx, const BlockCache& parents, WorkBlock& block, std::uint64_t voxels) {
   const float h = float(ctx.spacing);
   for (int slot = 0; slot < kBlockVoxels; ++slot) {
+    if (!(voxels >> slot & 1)) continue;
     const Vec3i v = voxelAt(block, slot);
     const Vec3i p(floorDiv(v.x(), 2), floorDiv(v.y(), 2), floorDiv(v.z(), 2));
     const Vec3i stored = ctx.level == 1 ? ctx.wrapCoarsest(p) : p;
@@ -119,8 +120,9 @@ void upsampleBlock(const LevelContext& ctx, const BlockCache& parents, WorkBlock
   }
 }
 
-void finishBlock(const LevelContext& ctx, WorkBlock& block) {
+void finishBlock(const LevelContext& ctx, WorkBlock& block, std::uint64_t voxels) {
   for (int slot = 0; slot < kBlockVoxels; ++slot) {
+    if (!(voxels >> slot & 1)) continue;
     block.frames[std::size_t(slot)] = ctx.frame(ctx.level, voxelAt(block, slot));
     ctx.color(block.triples[std::size_t(slot)], block.colors.data() + std::size_t(slot) * kVoxelColors);
   }

@@ -121,6 +121,9 @@ struct LazyDependencyPlan {
   bool gridScheme = false;
   int cellSize = 0;
   std::vector<BlockKey> primaryCells, dualCells;
+  // planExactLevel instead: the exact voxels needed before each step (voxels[0]: what upsampling
+  // makes) and after the last (the delivered ones); layers hold their blocks.
+  std::vector<std::vector<BlockMask>> voxels;
 };
 // stepClasses: the voxel class of each correction step (-1 = all voxels, see correctStep).
 LazyDependencyPlan planLevel(const std::vector<BlockKey>& deliver, const std::vector<int>& stepClasses, int readRadius);
@@ -138,6 +141,14 @@ std::vector<BlockMask> mergeMasks(std::vector<BlockMask> masks);
 // The parent voxels (the coarser level) of every voxel of `blocks`, by parent block: block b's
 // voxels read the 2^3 voxels at the corner 2 (b mod 2) of parent block floor(b / 2).
 std::vector<BlockMask> parentMasks(const std::vector<BlockKey>& blocks);
+// The parent voxels of exactly these voxels.
+std::vector<BlockMask> parentMasks(const std::vector<BlockMask>& voxels);
+// Every voxel within `radius` (a cube) of a masked one.
+std::vector<BlockMask> dilateMasks(const std::vector<BlockMask>& masks, int radius);
+// One level's plan voxel by voxel, for the standard scheme with s = 1 (each of `steps` steps
+// corrects every voxel from the state before it, reading `readRadius` around it): the voxels
+// needed before a step are those within readRadius of the ones needed after it.
+LazyDependencyPlan planExactLevel(const std::vector<BlockMask>& deliver, int steps, int readRadius);
 // Everything one level's kernels need.
 struct LevelContext {
   int level = 0, levels = 1;
@@ -172,9 +183,11 @@ struct LevelContext {
 // Fills `block` (origin set) at the coarsest level: tiled candidate slabs, T([q^-1 v]).
 void initializeBlock(const LevelContext& ctx, WorkBlock& block);
 // Fills `block` from the coarser level's finished triples (eq. 3-4) plus jitter.
-void upsampleBlock(const LevelContext& ctx, const BlockCache& parents, WorkBlock& block);
+// Only the voxels of `voxels` (bit per slot); the others stay unset and are never read.
+void upsampleBlock(const LevelContext& ctx, const BlockCache& parents, WorkBlock& block,
+                   std::uint64_t voxels = ~std::uint64_t(0));
 // Frames and colours of a block whose triples are set.
-void finishBlock(const LevelContext& ctx, WorkBlock& block);
+void finishBlock(const LevelContext& ctx, WorkBlock& block, std::uint64_t voxels = ~std::uint64_t(0));
 
 // A level's correction schedule: its steps in order, each a pass (or one subpass of it) with
 // the history windows its voxels read through (§5.2): the standard scheme (pass or subpass

@@ -10,11 +10,12 @@
 // Determinism: a voxel's triple depends only on (seed, domain, voxel, level, pass). The coarsest
 // level is request-independent: synthesized once, whole, on a torus covering the domain (the
 // paper synthesizes it over the whole volume), and cached in memory and on disk. Finer levels are
-// planned per request, finest to coarsest, as sets of 4^3-voxel blocks: under the standard
-// pass/subpass scheme each level grows by its full correction reach; under dual-grid correction
-// (§5.3, the default) by whole M^3 cells plus the read radius. So the same voxel gets the same
-// triple whatever was requested, for any thread count. Finished blocks of every level are cached
-// and reused by later requests.
+// planned per request, finest to coarsest: with s = 1 (the default) voxel by voxel, each level
+// delivering exactly the voxels the finer level starts from and starting from those within its
+// read radius per pass; with subpasses as 4^3-voxel blocks grown by the full correction reach;
+// under dual-grid correction (§5.3) by whole M^3 cells plus the read radius. So the same voxel
+// gets the same triple whatever was requested, for any thread count. Finished voxels of every
+// level are cached and reused by later requests.
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -197,6 +198,8 @@ class LazySolid {
   void synthesizeRequested(std::vector<lazy::BlockMask> requested, Progress& progress);
   // True where the level runs dual-grid correction (every level but the coarsest, if enabled).
   bool gridded(int level) const;
+  // True where the level is planned voxel by voxel (planExactLevel: the standard scheme, s = 1).
+  bool exactPlans(int level) const;
   // The dependency plan of one level for blocks it must deliver (lazy_blocks.h).
   lazy::LazyDependencyPlan planForLevel(int level, const std::vector<std::uint64_t>& deliver) const;
   lazy::LevelContext context(int level) const;
