@@ -40,12 +40,10 @@ std::optional<BlockCache> loadCoarsestLevel(const std::string& path, std::uint64
       detail::openCacheRecord(*bytes, std::string_view(kMagic, sizeof kMagic), kCoarsestCacheFormatVersion, key);
   if (!payload) return std::nullopt;
   ByteReader in(*payload);
-  std::vector<BlockKey> keys, expected;
+  std::vector<BlockKey> keys;
   std::vector<CoordinateTriple> triples;
   if (!in.array(keys) || !in.array(triples) || !in.atEnd()) return std::nullopt;
-  appendBox(expected, {(torusMin.array() / kB).matrix(), ((torusMin + torusSize).array() / kB - 1).matrix()});
-  std::sort(expected.begin(), expected.end());
-  if (keys != expected || triples.size() != keys.size() * kBlockVoxels) return std::nullopt;
+  if (keys != torusBlocks(torusMin, torusSize) || triples.size() != keys.size() * kBlockVoxels) return std::nullopt;
   const auto inRange = [&](std::int32_t i) { return i >= 0 && i < pixelCount; };
   if (!std::all_of(triples.begin(), triples.end(),
                    [&](const CoordinateTriple& t) { return inRange(t.xy) && inRange(t.yz) && inRange(t.zx); }))

@@ -273,21 +273,17 @@ std::vector<BlockMask> parentMasks(const std::vector<BlockMask>& voxels) {
 }
 
 std::vector<BlockMask> parentMasks(const std::vector<BlockKey>& blocks) {
-  // Voxels 4b..4b+3 have parents 2b..2b+1: a 2^3 corner of parent block floor(b / 2).
-  std::vector<BlockMask> parents;
-  parents.reserve(blocks.size());
-  for (BlockKey key : blocks) {
-    const Vec3i b = blockIndex(key);
-    const Vec3i parent(floorDiv(b.x(), 2), floorDiv(b.y(), 2), floorDiv(b.z(), 2));
-    const Vec3i corner = 2 * (b - 2 * parent);
-    std::uint64_t bits = 0;
-    for (int z = 0; z < 2; ++z)
-      for (int y = 0; y < 2; ++y)
-        for (int x = 0; x < 2; ++x)
-          bits |= std::uint64_t(1) << (((corner.z() + z) * kB + corner.y() + y) * kB + corner.x() + x);
-    parents.push_back({blockKey(parent.x(), parent.y(), parent.z()), bits});
-  }
-  return mergeMasks(std::move(parents));
+  std::vector<BlockMask> whole;
+  whole.reserve(blocks.size());
+  for (BlockKey key : blocks) whole.push_back({key, ~std::uint64_t(0)});
+  return parentMasks(whole);
+}
+
+std::vector<BlockKey> torusBlocks(const Vec3i& torusMin, const Vec3i& torusSize) {
+  std::vector<BlockKey> keys;
+  appendBox(keys, {(torusMin.array() / kB).matrix(), ((torusMin + torusSize).array() / kB - 1).matrix()});
+  std::sort(keys.begin(), keys.end());
+  return keys;
 }
 
 }  // namespace texsynth::lazy

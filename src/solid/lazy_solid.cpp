@@ -326,9 +326,7 @@ void LazySolid::synthesizeCoarsest(Progress& progress) {
     }
   }
   LazyDependencyPlan plan;
-  std::vector<BlockKey> keys;
-  appendBox(keys, {(torusMin_.array() / kB).matrix(), ((torusMin_ + torusSize_).array() / kB - 1).matrix()});
-  std::sort(keys.begin(), keys.end());
+  const std::vector<BlockKey> keys = torusBlocks(torusMin_, torusSize_);
   plan.layers = {keys, keys};
   synthesizeLevel(0, plan, true, progress);
   if (!path.empty()) detail::writeCacheFile(options_.cacheDirectory, path, serializeCoarsestLevel(cache, coarsestKey_));

@@ -141,8 +141,10 @@ std::vector<BlockMask> mergeMasks(std::vector<BlockMask> masks);
 // The parent voxels (the coarser level) of every voxel of `blocks`, by parent block: block b's
 // voxels read the 2^3 voxels at the corner 2 (b mod 2) of parent block floor(b / 2).
 std::vector<BlockMask> parentMasks(const std::vector<BlockKey>& blocks);
-// The parent voxels of exactly these voxels.
+// The parent voxels of exactly these voxels (the block form: of every voxel of the blocks).
 std::vector<BlockMask> parentMasks(const std::vector<BlockMask>& voxels);
+// The sorted keys of the coarsest level's torus blocks (torusMin, torusSize: multiples of kB).
+std::vector<BlockKey> torusBlocks(const Vec3i& torusMin, const Vec3i& torusSize);
 // Every voxel within `radius` (a cube) of a masked one.
 std::vector<BlockMask> dilateMasks(const std::vector<BlockMask>& masks, int radius);
 // One level's plan voxel by voxel, for the standard scheme with s = 1 (each of `steps` steps
