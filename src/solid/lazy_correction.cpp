@@ -23,6 +23,7 @@ namespace texsynth::lazy {
 namespace {
 
 constexpr std::int64_t kBlocksPerChunk = 8;
+constexpr int kHead = 8;  // leading PCA dimensions per plane that the quick bound tests first
 
 // Local offset of in-plane position (a, b) = (u, v) of each plane: I_xy (x, y), I_yz (y, z), I_zx (z, x).
 Vec3f planeOffset(int plane, int a, int b) {
@@ -49,7 +50,7 @@ constexpr int kOffsets[9][2] = {{0, 0}, {-1, -1}, {0, -1}, {1, -1}, {-1, 0}, {1,
 class BlockNeighborhood {
  public:
   BlockNeighborhood(const LevelContext& ctx, const WorkSet& set, const Vec3i& block, int radius, int step)
-      : set_(set), span_((kB - 1 + radius) / kB), side_(2 * span_ + 1) {
+      : set_(set), channels_(ctx.channels), span_((kB - 1 + radius) / kB), side_(2 * span_ + 1) {
     for (const WorkSet::Version& snapshot : set.snapshots) {
       TS_CHECK(snapshot.version >= 0 && std::size_t(snapshot.version) < byVersion_.size());
       byVersion_[std::size_t(snapshot.version)] = &snapshot.blocks;
@@ -73,10 +74,10 @@ class BlockNeighborhood {
     return t * kBlockVoxels + ((u.z() % kB) * kB + u.y() % kB) * kB + u.x() % kB;
   }
   const WorkBlock& block(int located) const { return set_.blocks[index(located)]; }
-  // A located voxel's colours (kVoxelColors) and triple: now (version < 0), or its snapshot of `version`.
-  const float* colors(int located, int version) const {
-    const std::size_t slot = std::size_t(located % kBlockVoxels) * kVoxelColors;
-    return (version < 0 ? block(located).colors.data() : snapshot(version, located).colors.data()) + slot;
+  // A located voxel's colours in `plane` and its triple: now (version < 0), or its snapshot of `version`.
+  const float* colors(int located, int version, int plane) const {
+    const std::size_t at = colorIndex(plane, located % kBlockVoxels, channels_);
+    return (version < 0 ? block(located).colors.data() : snapshot(version, located).colors.data()) + at;
   }
   const CoordinateTriple& triple(int located, int version) const {
     const std::size_t slot = std::size_t(located % kBlockVoxels);
@@ -91,7 +92,7 @@ class BlockNeighborhood {
 
   const WorkSet& set_;
   std::array<const std::vector<WorkSet::Snapshot>*, 16> byVersion_{};  // snapshots by version
-  int span_, side_;
+  int channels_, span_, side_;
   std::vector<std::int32_t> table_;
 };
 
@@ -174,7 +175,7 @@ class VoxelCorrector {
           continue;
         }
         const std::size_t tap = std::size_t(p * taps + k);
-        const float* color = around.colors(located_[tap], versionAt(offsets_[tap])) + p * kMaxChannels;
+        const float* color = around.colors(located_[tap], versionAt(offsets_[tap]), p);
         for (int i = 0; i < c; ++i) *write++ = color[i];  // c is small: no memmove call
       }
       ctx_.planes[p]->pca.project(buffer_.data(), query_[p].data());
@@ -301,36 +302,49 @@ class VoxelCorrector {
       if (w == 0.0f) continue;
       const int at = around.locate(local, corner0 + d);
       if (at < 0) return false;
-      const float* color = around.colors(at, versionAt(corner0 + d)) + p * kMaxChannels;
+      const float* color = around.colors(at, versionAt(corner0 + d), p);
       for (int i = 0; i < c; ++i) out[i] += w * color[i];
     }
     return true;
   }
 
-  // A quick test that distance(t) >= bound, summing in 8 lanes (vectorized). Both sums of these
-  // <= 60 non-negative terms are within 60 ulp-sized relative errors of the exact one, so
-  // lanes * (1 - 1e-4) >= bound implies the ordered sum >= bound: results stay bit-identical
-  // and the ordered sum runs only for the few candidates near the best.
+  // A quick test that distance(t) >= bound, summing in 8 lanes (vectorized): first the leading
+  // kHead PCA dimensions of all three planes (the largest variances, so most candidates fail
+  // here), then the rest plane by plane. Both sums of these <= 60 non-negative terms are within
+  // 60 ulp-sized relative errors of the exact one, so lanes * (1 - 1e-4) >= bound implies the
+  // ordered sum >= bound: results stay bit-identical and the ordered sum runs only for the few
+  // candidates near the best.
   bool surelyNotBelow(const CoordinateTriple& t, float bound) const {
-    float lanes[8] = {}, tail = 0;
+    float lanes[kHead] = {};
+    const float* targets[3];
     for (int p = 0; p < 3; ++p) {
-      const ExemplarLevel& level = *ctx_.planes[p];
-      const float* target = level.projectedAt(component(t, p));
+      targets[p] = ctx_.planes[p]->projectedAt(component(t, p));
+      if (ctx_.planes[p]->pca.outputDimension < kHead) return false;  // too few dimensions to split
       const float* query = query_[p].data();
-      const int dims = level.pca.outputDimension;
-      int i = 0;
-      for (; i + 8 <= dims; i += 8)
-        for (int j = 0; j < 8; ++j) {
-          const float d = query[i + j] - target[i + j];
+      for (int j = 0; j < kHead; ++j) {
+        const float d = query[j] - targets[p][j];
+        lanes[j] += d * d;
+      }
+    }
+    const auto total = [&lanes] {
+      return ((lanes[0] + lanes[4]) + (lanes[1] + lanes[5])) + ((lanes[2] + lanes[6]) + (lanes[3] + lanes[7]));
+    };
+    if (total() * (1.0f - 1e-4f) >= bound) return true;
+    float tail = 0;
+    for (int p = 0; p < 3; ++p) {
+      const float* query = query_[p].data();
+      const int dims = ctx_.planes[p]->pca.outputDimension;
+      int i = kHead;
+      for (; i + kHead <= dims; i += kHead)
+        for (int j = 0; j < kHead; ++j) {
+          const float d = query[i + j] - targets[p][i + j];
           lanes[j] += d * d;
         }
       for (; i < dims; ++i) {
-        const float d = query[i] - target[i];
+        const float d = query[i] - targets[p][i];
         tail += d * d;
       }
-      const float sum =
-          ((lanes[0] + lanes[4]) + (lanes[1] + lanes[5])) + ((lanes[2] + lanes[6]) + (lanes[3] + lanes[7])) + tail;
-      if (sum * (1.0f - 1e-4f) >= bound) return true;
+      if ((total() + tail) * (1.0f - 1e-4f) >= bound) return true;
     }
     return false;
   }
@@ -408,7 +422,7 @@ StepCounts correctStep(const LevelContext& ctx, WorkSet& set, int step, const St
         if (!(corrected[std::size_t(i)] >> slot & 1)) continue;
         const CoordinateTriple t = results[std::size_t(i) * kBlockVoxels + std::size_t(slot)];
         out.triples[std::size_t(slot)] = t;
-        ctx.color(t, out.colors.data() + std::size_t(slot) * kVoxelColors);
+        ctx.color(t, out.colors.data(), slot);
       }
     }
   });

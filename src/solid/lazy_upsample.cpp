@@ -53,14 +53,12 @@ Mat3f LevelContext::frame(int atLevel, const Vec3i& v) const {
   return (*orientation)(atLevel, position).normalized().toRotationMatrix();
 }
 
-void LevelContext::color(const CoordinateTriple& t, float* out) const {
-  const float* a = planes[0]->image.pixels.data() + std::size_t(t.xy) * channels;
-  const float* b = planes[1]->image.pixels.data() + std::size_t(t.yz) * channels;
-  const float* c = planes[2]->image.pixels.data() + std::size_t(t.zx) * channels;
-  for (int i = 0; i < channels; ++i) {
-    out[i] = a[i];
-    out[kMaxChannels + i] = b[i];
-    out[2 * kMaxChannels + i] = c[i];
+void LevelContext::color(const CoordinateTriple& t, float* blockColors, int slot) const {
+  const std::int32_t pixels[3] = {t.xy, t.yz, t.zx};
+  for (int p = 0; p < 3; ++p) {
+    const float* from = planes[p]->image.pixels.data() + std::size_t(pixels[p]) * channels;
+    float* to = blockColors + colorIndex(p, slot, channels);
+    for (int i = 0; i < channels; ++i) to[i] = from[i];
   }
 }
 
@@ -124,7 +122,7 @@ void finishBlock(const LevelContext& ctx, WorkBlock& block, std::uint64_t voxels
   for (int slot = 0; slot < kBlockVoxels; ++slot) {
     if (!(voxels >> slot & 1)) continue;
     block.frames[std::size_t(slot)] = ctx.frame(ctx.level, voxelAt(block, slot));
-    ctx.color(block.triples[std::size_t(slot)], block.colors.data() + std::size_t(slot) * kVoxelColors);
+    ctx.color(block.triples[std::size_t(slot)], block.colors.data(), slot);
   }
 }
 
