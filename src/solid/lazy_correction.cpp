@@ -1,6 +1,7 @@
 // Lazy solid synthesis, correction (§4.3): a voxel gathers three N x N neighbourhoods of colours
-// in the planes of its local frame (nearest voxel; on coarse levels with a field, positions
-// integrated along the field and colours read trilinearly), projects each with that plane's PCA, and
+// in the planes of its local frame (nearest voxel, its colour read where its coordinate puts the
+// exact rotated tap; on coarse levels with a field, positions integrated along the field and
+// colours read trilinearly), projects each with that plane's PCA, and
 // takes among the candidate triples proposed by its in-plane neighbours (the paper's reduced
 // S(v)) the one whose three exemplar neighbourhoods are nearest, summed over the planes. A step
 // computes all its results from the state before it, then writes them, so results never depend
@@ -24,6 +25,7 @@ namespace {
 
 constexpr std::int64_t kBlocksPerChunk = 8;
 constexpr int kHead = 8;  // leading PCA dimensions per plane that the quick bound tests first
+constexpr std::array<int, 2> kNoShift = {0, 0};
 
 // Local offset of in-plane position (a, b) = (u, v) of each plane: I_xy (x, y), I_yz (y, z), I_zx (z, x).
 Vec3f planeOffset(int plane, int a, int b) {
@@ -146,6 +148,7 @@ class VoxelCorrector {
     TS_CHECK(ctx.triples->count <= 64);
     buffer_.resize(std::size_t(n_) * n_ * ctx.channels);
     offsets_.resize(std::size_t(3 * (n_ * n_ + 9)));
+    shifts_.resize(std::size_t(3 * n_ * n_));
     located_.resize(offsets_.size());
     if (integrated_) taps_.resize(std::size_t(3 * n_ * n_)), walk_.resize(std::size_t(n_));
   }
@@ -175,7 +178,8 @@ class VoxelCorrector {
           continue;
         }
         const std::size_t tap = std::size_t(p * taps + k);
-        const float* color = around.colors(located_[tap], versionAt(offsets_[tap]), p);
+        const float* color = shifts_[tap] == kNoShift ? around.colors(located_[tap], versionAt(offsets_[tap]), p)
+                                                      : shiftedColor(around, tap, p);
         for (int i = 0; i < c; ++i) *write++ = color[i];  // c is small: no memmove call
       }
       ctx_.planes[p]->pca.project(buffer_.data(), query_[p].data());
@@ -193,9 +197,10 @@ class VoxelCorrector {
       for (int k = 0; k < 9; ++k) {
         const std::size_t source = std::size_t(3 * taps + p * 9 + k);
         const std::int32_t pixel = component(around.triple(located_[source], versionAt(offsets_[source])), p);
-        // [T_P(v + d) - h P(d)]: the in-plane offset is (a, b) in the plane's (u, v).
-        const int u = wrapIndex(std::int64_t(pixel % ctx_.width) - ctx_.spacing * kOffsets[k][0], ctx_.width);
-        const int w = wrapIndex(std::int64_t(pixel / ctx_.width) - ctx_.spacing * kOffsets[k][1], ctx_.height);
+        // [T_P(v + d) - h P(d)], d the neighbour's offset in the local frame (in the plane's (u, v)).
+        const std::array<int, 2>& back = sourceShifts_[std::size_t(p * 9 + k)];
+        const int u = wrapIndex(std::int64_t(pixel % ctx_.width) + back[0], ctx_.width);
+        const int w = wrapIndex(std::int64_t(pixel / ctx_.width) + back[1], ctx_.height);
         const std::int32_t sourcePixel = w * ctx_.width + u;
         if (std::find(proposed, proposed + proposals, sourcePixel) != proposed + proposals) continue;
         proposed[proposals++] = sourcePixel;
@@ -225,9 +230,38 @@ class VoxelCorrector {
     std::size_t i = 0;
     for (int p = 0; p < 3; ++p)
       for (int b = -r_; b <= r_; ++b)
-        for (int a = -r_; a <= r_; ++a) offsets_[i++] = roundVector(frame * planeOffset(p, a, b));
+        for (int a = -r_; a <= r_; ++a) {
+          // The rounded tap lies off the exact one by a fraction of a voxel; in the plane that is
+          // this many exemplar pixels (h per voxel), the shift shiftedColor applies.
+          const Vec3f exact = planeOffset(p, a, b);
+          offsets_[i] = roundVector(frame * exact);
+          const Vec3f residual = exact - frame.transpose() * offsets_[i].cast<float>();
+          const int du = int(std::floor(float(ctx_.spacing) * residual[kPlaneAxes[p][0]] + 0.5f));
+          const int dv = int(std::floor(float(ctx_.spacing) * residual[kPlaneAxes[p][1]] + 0.5f));
+          shifts_[i++] = du == 0 && dv == 0 ? kNoShift : std::array<int, 2>{du, dv};
+        }
     for (int p = 0; p < 3; ++p)
-      for (const auto& d : kOffsets) offsets_[i++] = roundVector(frame * planeOffset(p, d[0], d[1]));
+      for (int k = 0; k < 9; ++k) {
+        // The rounded neighbour's own local offset (not the intended one) says where its
+        // coordinate leads back to.
+        offsets_[i] = roundVector(frame * planeOffset(p, kOffsets[k][0], kOffsets[k][1]));
+        const Vec3f local = frame.transpose() * offsets_[i++].cast<float>();
+        for (int j = 0; j < 2; ++j)
+          sourceShifts_[std::size_t(p * 9 + k)][std::size_t(j)] =
+              -int(std::floor(float(ctx_.spacing) * local[kPlaneAxes[p][j]] + 0.5f));
+      }
+  }
+
+  // Plane p's colour for tap `tap` whose rounded voxel lies off the exact offset (a rotated
+  // frame): the neighbour's plane-p coordinate moved by the residual, as if the neighbour sat at
+  // the exact offset (Lefebvre and Hoppe 2006, anisometric synthesis). Nearest-voxel colours
+  // alone misalign a rotated neighbourhood by up to half a voxel, which thin features such as a
+  // weave's threads do not survive.
+  const float* shiftedColor(const BlockNeighborhood& around, std::size_t tap, int p) const {
+    const std::int32_t pixel = component(around.triple(located_[tap], versionAt(offsets_[tap])), p);
+    const int u = wrapIndex(std::int64_t(pixel % ctx_.width) + shifts_[tap][0], ctx_.width);
+    const int v = wrapIndex(std::int64_t(pixel / ctx_.width) + shifts_[tap][1], ctx_.height);
+    return ctx_.planes[p]->image.pixels.data() + (std::size_t(v) * ctx_.width + u) * std::size_t(ctx_.channels);
   }
 
   // The version the voxel's history window reads at `offset` (-1: the neighbour's current state).
@@ -374,6 +408,8 @@ class VoxelCorrector {
   std::vector<float> buffer_, query_[3];
   std::vector<Vec3f> taps_, walk_;  // integrated tap offsets (3 N^2), one walk along an axis (N)
   std::vector<Vec3i> offsets_;
+  std::vector<std::array<int, 2>> shifts_;             // per neighbourhood tap: exemplar shift (shiftedColor)
+  std::array<std::array<int, 2>, 27> sourceShifts_{};  // per candidate source: back to this voxel
   std::vector<int> located_;
   const std::int8_t* sources_ = nullptr;  // the voxel's read table (StepReads)
   int windowRadius_ = 0;

@@ -439,6 +439,48 @@ TEST(LazySolid, StripesFollowARotatedField) {
   EXPECT_GT(rotatedY, 4.0 * rotatedX) << rotatedX << " vs " << rotatedY;
 }
 
+// Layers normal to local x of period `period` voxels under a 45-degree turn about z: the mean
+// absolute colour step along the layers (world x - y) and across them (world x + y).
+std::pair<double, double> diagonalLayerSteps(float period, std::uint64_t seed) {
+  const int size = 32;
+  Image xy(size, size, 3), yz(size, size, 3, 0.5f), zx(size, size, 3);
+  for (int j = 0; j < size; ++j)
+    for (int i = 0; i < size; ++i)
+      for (int c = 0; c < 3; ++c) {
+        xy.at(i, j, c) = 0.5f + 0.4f * std::sin(6.2831853f * float(i) / period);
+        zx.at(i, j, c) = 0.5f + 0.4f * std::sin(6.2831853f * float(j) / period);
+      }
+  const Quatf eighth(Eigen::AngleAxisf(0.7853982f, Vec3f::UnitZ()));
+  LazySolidOptions options = fastOptions();
+  options.seed = seed;
+  LazySolid solid(xy, yz, zx, options, constantOrientation(eighth));
+  const int n = 16;
+  solid.synthesizeBox({0, 0, 0}, {n + 1, n + 1, n});
+  double along = 0, across = 0;
+  float a[3], b[3], c[3];
+  for (int z = 0; z < n; ++z)
+    for (int y = 1; y < n; ++y)
+      for (int x = 0; x < n; ++x) {
+        solid.color({x, y, z}, a);
+        solid.color({x + 1, y - 1, z}, b);
+        solid.color({x + 1, y + 1, z}, c);
+        along += std::abs(a[0] - b[0]);
+        across += std::abs(a[0] - c[0]);
+      }
+  return {along, across};
+}
+
+TEST(LazySolid, ThinLayersFollowADiagonalFrame) {
+  // Nearest-voxel neighbourhoods of a rotated frame sit up to half a voxel off the exemplar's
+  // grid; correction reads each neighbour's colour where its coordinate says the exact tap lies,
+  // so layers a few voxels thick stay layers instead of breaking into blobs.
+  // Period 4: ratios 2.28-2.47 over these seeds, 1.16-1.50 with nearest-voxel colours.
+  for (std::uint64_t seed : {1, 2, 3}) {
+    const auto [along, across] = diagonalLayerSteps(4.0f, seed);
+    EXPECT_GT(across, 1.9 * along) << "seed " << seed << ": along " << along << ", across " << across;
+  }
+}
+
 TEST(LazySolid, RejectsBadOptions) {
   auto expectBad = [](const std::string& parameter, auto change) {
     LazySolidOptions options = fastOptions();
