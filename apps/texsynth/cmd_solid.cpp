@@ -495,7 +495,10 @@ Command registerSolidCommand(CLI::App& app, const GlobalOptions& globals) {
          "lazy, gradient with --inner: depth of the outer region, as a fraction of the mesh's bounding-box diagonal")
       ->capture_default_str()
       ->check(finiteIn(1e-4, 1, true));
-  sub->add_option("--levels", args->levels, "lazy: pyramid levels L")->capture_default_str()->check(integerIn(1, 8));
+  sub->add_option("--levels", args->levels,
+                  "lazy: pyramid levels L (default: 4, fewer for a small exemplar, so that the coarsest N x N "
+                  "neighbourhood, 2^(L-1) pixels apart, fits in it)")
+      ->check(integerIn(1, 8));
   sub->add_option("--passes", args->passes,
                   "lazy: correction passes per level above the coarsest (paper: 2); each widens what a request depends "
                   "on, so 1 answers a model in seconds")

@@ -28,7 +28,7 @@ struct SolidArgs {
   // lazy
   std::string field, sketch, inner, cut;
   std::vector<std::string> masks;
-  int levels = 4, passes = 1, coarsestPasses = 3, gridCell = 12, subpasses = 1, candidates = 6;
+  int levels = 0, passes = 1, coarsestPasses = 3, gridCell = 12, subpasses = 1, candidates = 6;
   std::string colorRule = "medoid";
   bool dualGrid = false;
   float shell = 0.05f;

@@ -17,22 +17,30 @@ using nlohmann::json;
 
 namespace {
 
-// One LazySolid on one exemplar (all planes) or three (XY YZ ZX).
-std::shared_ptr<LazySolid> makeSynthesis(const std::vector<std::string>& exemplars, const LazySolidOptions& options,
-                                         const LazyOrientation& orientation) {
+// The exemplar images: one for all planes or three (XY YZ ZX).
+std::vector<Image> readExemplars(const std::vector<std::string>& exemplars) {
   if (exemplars.size() == 2)
     throw ParameterError("EXEMPLAR", "give one exemplar for all three planes, or three: XY YZ ZX");
-  if (exemplars.size() == 1) return std::make_shared<LazySolid>(readImage(exemplars[0]), options, orientation);
-  return std::make_shared<LazySolid>(readImage(exemplars[0]), readImage(exemplars[1]), readImage(exemplars[2]), options,
-                                     orientation);
+  std::vector<Image> images;
+  for (const std::string& exemplar : exemplars) images.push_back(readImage(exemplar));
+  return images;
+}
+
+// One LazySolid on one exemplar (all planes) or three (XY YZ ZX).
+std::shared_ptr<LazySolid> makeSynthesis(const std::vector<Image>& images, const LazySolidOptions& options,
+                                         const LazyOrientation& orientation) {
+  if (images.size() == 1) return std::make_shared<LazySolid>(images[0], options, orientation);
+  return std::make_shared<LazySolid>(images[0], images[1], images[2], options, orientation);
 }
 
 }  // namespace
 
 LazyBuild makeLazySolid(const SolidArgs& args, const Mesh& mesh, const Box3f& box, const SolidPlacement& placement,
                         std::uint64_t seed, json& report, Progress& progress) {
+  const std::vector<Image> images = readExemplars(args.exemplars);
   LazySolidOptions options;
-  options.levels = args.levels;
+  // Without --levels, up to 4, fewer where the coarsest neighbourhood would not fit the exemplar.
+  options.levels = args.levels > 0 ? args.levels : lazyLevelsFor(images[0].width, images[0].height, options);
   options.passes = args.passes;
   options.coarsestPasses = args.coarsestPasses;
   options.dualGrid = args.dualGrid;
@@ -65,7 +73,7 @@ LazyBuild makeLazySolid(const SolidArgs& args, const Mesh& mesh, const Box3f& bo
                                              : "lazy, identity field";
 
   LazyBuild build;
-  auto outer = makeSynthesis(args.exemplars, options, orientation);
+  auto outer = makeSynthesis(images, options, orientation);
   build.parts.push_back({"shell", outer});
   auto outerTexture = std::make_shared<LazySolidTexture>(outer, placement);
   // The coarsest level over the whole box once (as the paper does for its volume; from the disk
@@ -87,7 +95,7 @@ LazyBuild makeLazySolid(const SolidArgs& args, const Mesh& mesh, const Box3f& bo
   LazySolidOptions innerOptions = options;
   innerOptions.seed = seed ^ 0x1a2b3c4d5e6fULL;  // independent of the shell's synthesis
   innerOptions.featureMasks.clear();             // --mask describes the shell's exemplars
-  auto inner = makeSynthesis({args.inner}, innerOptions, orientation);
+  auto inner = makeSynthesis({readImage(args.inner)}, innerOptions, orientation);
   build.parts.push_back({"core", inner});
   const float depth = args.shell * mesh.bounds().size().norm();
   report["shell_depth"] = depth;

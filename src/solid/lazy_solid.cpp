@@ -114,6 +114,14 @@ void validateLazySolidOptions(const LazySolidOptions& options) {
           "domainSize", "the domain must stay within 2^19 voxels of the origin");
 }
 
+int lazyLevelsFor(int width, int height, const LazySolidOptions& options, int maxLevels) {
+  require(!options.neighborhoodSizes.empty(), "neighborhoodSizes", "needs at least one N");
+  const std::int64_t side = std::min(width, height), coarsestN = options.neighborhoodSizes.front();
+  int levels = 1;
+  while (levels < maxLevels && coarsestN << levels <= side) ++levels;  // N * 2^(L-1) <= side for L = levels + 1
+  return levels;
+}
+
 LazySolid::LazySolid(const Image& exemplar, const LazySolidOptions& options, LazyOrientation orientation,
                      Progress& progress)
     : options_(options), orientation_(std::move(orientation)), impl_(std::make_unique<Impl>()) {

@@ -481,6 +481,19 @@ TEST(LazySolid, ThinLayersFollowADiagonalFrame) {
   }
 }
 
+TEST(LazySolid, LevelsForASmallExemplarKeepTheCoarsestNeighbourhoodInside) {
+  const LazySolidOptions options;  // N = 7 on the coarsest level
+  EXPECT_EQ(lazyLevelsFor(128, 128, options), 4);
+  EXPECT_EQ(lazyLevelsFor(64, 200, options), 4);  // 7 * 8 = 56 <= 64
+  EXPECT_EQ(lazyLevelsFor(50, 50, options), 3);   // 56 > 50, 28 <= 50
+  EXPECT_EQ(lazyLevelsFor(200, 20, options), 2);  // GIMP's warning: 14 <= 20 < 28
+  EXPECT_EQ(lazyLevelsFor(10, 10, options), 1);
+  EXPECT_EQ(lazyLevelsFor(1024, 1024, options, 8), 8);
+  LazySolidOptions wide;
+  wide.neighborhoodSizes = {15};
+  EXPECT_EQ(lazyLevelsFor(64, 64, wide), 3);  // 15 * 4 = 60 <= 64 < 120
+}
+
 TEST(LazySolid, RejectsBadOptions) {
   auto expectBad = [](const std::string& parameter, auto change) {
     LazySolidOptions options = fastOptions();

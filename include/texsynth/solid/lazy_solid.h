@@ -117,6 +117,12 @@ struct LazySolidOptions {
 // "trilinearLevels", "featureMasks", "featureWeight", "gridCellSize", "domainSize").
 void validateLazySolidOptions(const LazySolidOptions& options);
 
+// The most pyramid levels, up to `maxLevels`, whose coarsest neighbourhood (neighborhoodSizes[0]
+// taps, 2^(L-1) exemplar pixels apart) fits in a width x height exemplar; at least 1. A wider one
+// wraps around the exemplar and matches blurred copies of itself: GIMP's 20-pixel warning stripes
+// came out as large blocks at 4 levels and as clean stripes at 2.
+int lazyLevelsFor(int width, int height, const LazySolidOptions& options, int maxLevels = 4);
+
 // The local frame (global -> local rotation, as RotationField) at a position of `level`
 // (0 = coarsest), given in finest-level voxel units (exemplar pixels). See lazy_field.h for
 // the adapter from a RotationField; an empty function means the identity everywhere.
