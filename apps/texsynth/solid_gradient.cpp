@@ -18,12 +18,6 @@ using nlohmann::json;
 
 namespace {
 
-std::vector<Image> readImages(const std::vector<std::string>& paths) {
-  std::vector<Image> images;
-  for (const std::string& path : paths) images.push_back(readImage(path));
-  return images;
-}
-
 // Peak bytes of a synthesis: the control points (feature vectors of up to 4 channels as floats, with a layer's
 // work copies) and the bucket window, about 2.3 KB per voxel column at the finest level (588 MiB for 512² columns,
 // bench/gradient_synthesis.sh; a field widens the window by sqrt 2).

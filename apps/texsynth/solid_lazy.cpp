@@ -21,9 +21,7 @@ namespace {
 std::vector<Image> readExemplars(const std::vector<std::string>& exemplars) {
   if (exemplars.size() == 2)
     throw ParameterError("EXEMPLAR", "give one exemplar for all three planes, or three: XY YZ ZX");
-  std::vector<Image> images;
-  for (const std::string& exemplar : exemplars) images.push_back(readImage(exemplar));
-  return images;
+  return readImages(exemplars);
 }
 
 // One LazySolid on one exemplar (all planes) or three (XY YZ ZX).
@@ -54,7 +52,7 @@ LazyBuild makeLazySolid(const SolidArgs& args, const Mesh& mesh, const Box3f& bo
   setLazyDomain(options, placement, box);
   if (!args.masks.empty() && args.masks.size() != 1 && args.masks.size() != args.exemplars.size())
     throw ParameterError("--mask", "give one mask for all planes, or one per exemplar (XY YZ ZX)");
-  for (const std::string& mask : args.masks) options.featureMasks.push_back(readImage(mask));
+  options.featureMasks = readImages(args.masks);
   LazyOrientation orientation;
   if (!args.field.empty()) {
     const RotationField field = readField(args.field).rotations;

@@ -60,12 +60,14 @@ void validateCandidateTripleInputs(const Image& xy, const Image& yz, const Image
                                       std::to_string(width * width) + " pairs are searched");
 }
 
+std::int32_t offsetPixel(std::int32_t pixel, int width, int height, int du, int dv) {
+  const int u = pixel % width, v = pixel / width;
+  return std::int32_t(wrapIndex(std::int64_t(v) + dv, height) * width + wrapIndex(std::int64_t(u) + du, width));
+}
+
 CoordinateTriple offsetTriple(const CoordinateTriple& triple, int width, int height, int dx, int dy, int dz) {
-  auto move = [&](std::int32_t pixel, int du, int dv) {
-    const int u = pixel % width, v = pixel / width;
-    return std::int32_t(wrapIndex(std::int64_t(v) + dv, height) * width + wrapIndex(std::int64_t(u) + du, width));
-  };
-  return {move(triple.xy, dx, dy), move(triple.yz, dy, dz), move(triple.zx, dz, dx)};
+  return {offsetPixel(triple.xy, width, height, dx, dy), offsetPixel(triple.yz, width, height, dy, dz),
+          offsetPixel(triple.zx, width, height, dz, dx)};
 }
 
 CoordinateTriple slabTriple(const CandidateTriples& triples, Plane plane, std::int32_t pixel, int t, int spacing) {

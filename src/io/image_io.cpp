@@ -161,6 +161,12 @@ Image readImage(const std::string& path) {
   }
 }
 
+std::vector<Image> readImages(const std::vector<std::string>& paths) {
+  std::vector<Image> images;
+  for (const std::string& path : paths) images.push_back(readImage(path));
+  return images;
+}
+
 ImageFileInfo readImageInfo(const std::string& path) {
   std::string bytes;
   Format format = loadForReading(path, bytes);

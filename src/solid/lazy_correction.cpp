@@ -144,6 +144,7 @@ class VoxelCorrector {
     for (int p = 0; p < 3; ++p) {
       TS_CHECK(ctx.planes[p]->pca.inputDimension == n_ * n_ * ctx.channels);
       query_[p].resize(std::size_t(ctx.planes[p]->pca.outputDimension));
+      headFits_ = headFits_ && ctx.planes[p]->pca.outputDimension >= kHead;
     }
     TS_CHECK(ctx.triples->count <= 64);
     buffer_.resize(std::size_t(n_) * n_ * ctx.channels);
@@ -199,9 +200,7 @@ class VoxelCorrector {
         const std::int32_t pixel = component(around.triple(located_[source], versionAt(offsets_[source])), p);
         // [T_P(v + d) - h P(d)], d the neighbour's offset in the local frame (in the plane's (u, v)).
         const std::array<int, 2>& back = sourceShifts_[std::size_t(p * 9 + k)];
-        const int u = wrapIndex(std::int64_t(pixel % ctx_.width) + back[0], ctx_.width);
-        const int w = wrapIndex(std::int64_t(pixel / ctx_.width) + back[1], ctx_.height);
-        const std::int32_t sourcePixel = w * ctx_.width + u;
+        const std::int32_t sourcePixel = offsetPixel(pixel, ctx_.width, ctx_.height, back[0], back[1]);
         if (std::find(proposed, proposed + proposals, sourcePixel) != proposed + proposals) continue;
         proposed[proposals++] = sourcePixel;
         const CoordinateTriple* triples = candidates.at(Plane(p), sourcePixel);
@@ -235,20 +234,17 @@ class VoxelCorrector {
           // this many exemplar pixels (h per voxel), the shift shiftedColor applies.
           const Vec3f exact = planeOffset(p, a, b);
           offsets_[i] = roundVector(frame * exact);
-          const Vec3f residual = exact - frame.transpose() * offsets_[i].cast<float>();
-          const int du = int(std::floor(float(ctx_.spacing) * residual[kPlaneAxes[p][0]] + 0.5f));
-          const int dv = int(std::floor(float(ctx_.spacing) * residual[kPlaneAxes[p][1]] + 0.5f));
-          shifts_[i++] = du == 0 && dv == 0 ? kNoShift : std::array<int, 2>{du, dv};
+          const Vec3i shift =
+              roundVector(float(ctx_.spacing) * (exact - frame.transpose() * offsets_[i].cast<float>()));
+          shifts_[i++] = {shift[kPlaneAxes[p][0]], shift[kPlaneAxes[p][1]]};
         }
     for (int p = 0; p < 3; ++p)
       for (int k = 0; k < 9; ++k) {
         // The rounded neighbour's own local offset (not the intended one) says where its
         // coordinate leads back to.
         offsets_[i] = roundVector(frame * planeOffset(p, kOffsets[k][0], kOffsets[k][1]));
-        const Vec3f local = frame.transpose() * offsets_[i++].cast<float>();
-        for (int j = 0; j < 2; ++j)
-          sourceShifts_[std::size_t(p * 9 + k)][std::size_t(j)] =
-              -int(std::floor(float(ctx_.spacing) * local[kPlaneAxes[p][j]] + 0.5f));
+        const Vec3i local = roundVector(float(ctx_.spacing) * (frame.transpose() * offsets_[i++].cast<float>()));
+        sourceShifts_[std::size_t(p * 9 + k)] = {-local[kPlaneAxes[p][0]], -local[kPlaneAxes[p][1]]};
       }
   }
 
@@ -258,10 +254,9 @@ class VoxelCorrector {
   // alone misalign a rotated neighbourhood by up to half a voxel, which thin features such as a
   // weave's threads do not survive.
   const float* shiftedColor(const BlockNeighborhood& around, std::size_t tap, int p) const {
-    const std::int32_t pixel = component(around.triple(located_[tap], versionAt(offsets_[tap])), p);
-    const int u = wrapIndex(std::int64_t(pixel % ctx_.width) + shifts_[tap][0], ctx_.width);
-    const int v = wrapIndex(std::int64_t(pixel / ctx_.width) + shifts_[tap][1], ctx_.height);
-    return ctx_.planes[p]->image.pixels.data() + (std::size_t(v) * ctx_.width + u) * std::size_t(ctx_.channels);
+    const std::int32_t pixel = offsetPixel(component(around.triple(located_[tap], versionAt(offsets_[tap])), p),
+                                           ctx_.width, ctx_.height, shifts_[tap][0], shifts_[tap][1]);
+    return ctx_.planes[p]->image.pixels.data() + std::size_t(pixel) * std::size_t(ctx_.channels);
   }
 
   // The version the voxel's history window reads at `offset` (-1: the neighbour's current state).
@@ -351,9 +346,9 @@ class VoxelCorrector {
   bool surelyNotBelow(const CoordinateTriple& t, float bound) const {
     float lanes[kHead] = {};
     const float* targets[3];
+    if (!headFits_) return false;  // too few dimensions to split: the exact distance decides
     for (int p = 0; p < 3; ++p) {
       targets[p] = ctx_.planes[p]->projectedAt(component(t, p));
-      if (ctx_.planes[p]->pca.outputDimension < kHead) return false;  // too few dimensions to split
       const float* query = query_[p].data();
       for (int j = 0; j < kHead; ++j) {
         const float d = query[j] - targets[p][j];
@@ -403,6 +398,7 @@ class VoxelCorrector {
   int n_, r_;
   std::int64_t comparisons_ = 0;  // neighbourhood comparisons (candidates measured), all voxels
   bool integrated_;
+  bool headFits_ = true;  // every plane keeps >= kHead PCA dimensions (surelyNotBelow's first test)
   int readRadius_;
   float reach_;  // largest integrated tap offset, sqrt(2) N/2
   std::vector<float> buffer_, query_[3];

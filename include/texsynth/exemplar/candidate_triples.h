@@ -69,6 +69,9 @@ CandidateTriples computeCandidateTriples(const Image& xy, const Image& yz, const
 void validateCandidateTripleInputs(const Image& xy, const Image& yz, const Image& zx, int spacing,
                                    const CandidateTripleOptions& options);
 
+// Pixel index `pixel` moved by (du, dv), wrapped toroidally in a width x height exemplar.
+std::int32_t offsetPixel(std::int32_t pixel, int width, int height, int du, int dv);
+
 // Eq. 4 on pixel indices: T + (dx, dy, dz) = (T_xy + (dx, dy), T_yz + (dy, dz), T_zx + (dz, dx)), each wrapped
 // toroidally in a width x height exemplar.
 CoordinateTriple offsetTriple(const CoordinateTriple& triple, int width, int height, int dx, int dy, int dz);

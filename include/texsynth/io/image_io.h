@@ -8,6 +8,7 @@
 // raises one InputError naming the file and the problem; nothing is allocated for absurd
 // sizes. Writers go through writeAtomically: a failed write never leaves a partial file.
 #include <string>
+#include <vector>
 
 #include "texsynth/core/atomic_file.h"
 #include "texsynth/core/image.h"
@@ -24,6 +25,8 @@ struct ImageFileInfo {
 // EXR samples are returned as stored (HDR values above 1 are kept).
 // Channels: 1 gray, 2 gray+alpha, 3 RGB, 4 RGBA, as stored in the file.
 Image readImage(const std::string& path);
+// readImage of each path, in order.
+std::vector<Image> readImages(const std::vector<std::string>& paths);
 
 // Size, channels and bit depth from the file's header, without decoding the pixels.
 ImageFileInfo readImageInfo(const std::string& path);
