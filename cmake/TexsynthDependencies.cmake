@@ -14,6 +14,7 @@ find_package(OpenMP REQUIRED)
 find_package(CGAL REQUIRED)  # isotropic remeshing of the surface-synthesis mesh hierarchy
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)
+pkg_check_modules(HTTPLIB REQUIRED IMPORTED_TARGET cpp-httplib)  # texsynth studio's server
 if(TEXSYNTH_BUILD_TESTS OR TEXSYNTH_BUILD_BENCH)
   find_package(GTest REQUIRED)
 endif()

@@ -18,7 +18,11 @@ PACKAGES=(
   time python3
   # flow animation videos and GIFs (texsynth animate)
   ffmpeg
+  # texsynth studio: its HTTP server, and the browser its tests drive (headless, software WebGL)
+  libcpp-httplib-dev chromium
 )
+# The studio page's packages come from npm (web/package.json); a machine with Node.js already keeps it.
+command -v npm >/dev/null 2>&1 || PACKAGES+=(nodejs npm)
 PACKAGES+=("$@")
 
 missing=()
@@ -56,4 +60,14 @@ if [ ! -f "$DATA_DIR/meshes/.complete" ]; then
   [ -n "$unpacked" ] && rm -rf "$unpacked"
   touch "$DATA_DIR/meshes/.complete"
   echo "install-deps: extracted ${#MESHES[@]} CGAL meshes into $DATA_DIR/meshes"
+fi
+
+# The studio page's front-end packages (three.js, three-mesh-bvh) and the browser tests' driver
+# (playwright-core), at the versions web/package-lock.json pins; again only when the lock changed.
+WEB_DIR="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/web"
+stamp="$WEB_DIR/node_modules/.texsynth-lock"
+if ! cmp -s "$WEB_DIR/package-lock.json" "$stamp"; then
+  (cd "$WEB_DIR" && npm ci --no-audit --no-fund --loglevel=error)
+  cp "$WEB_DIR/package-lock.json" "$stamp"
+  echo "install-deps: installed the studio page's npm packages into web/node_modules"
 fi

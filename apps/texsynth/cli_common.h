@@ -112,6 +112,7 @@ Command registerSolidCommand(CLI::App& app, const GlobalOptions& globals);
 Command registerFieldCommand(CLI::App& app, const GlobalOptions& globals);
 Command registerVectorizeCommand(CLI::App& app, const GlobalOptions& globals);
 Command registerEditCommand(CLI::App& app, const GlobalOptions& globals);
+Command registerStudioCommand(CLI::App& app, const GlobalOptions& globals);
 Command registerSurfaceCommand(CLI::App& app, const GlobalOptions& globals);
 Command registerAnimateCommand(CLI::App& app, const GlobalOptions& globals);
 

@@ -15,6 +15,7 @@
 #include "demo_gradient.h"
 #include "demo_lazy.h"
 #include "demo_pixel.h"
+#include "demo_studio.h"
 #include "demo_surface.h"
 #include "image_layout.h"
 #include "number_checks.h"
@@ -116,6 +117,7 @@ std::string markdownReport(const json& r) {
   md << surfaceMarkdown(r["surface"]);
   md << animationMarkdown(r["animation"]);
   md << lazySolidMarkdown(r["lazy_solid"]);
+  md << studioMarkdown(r["studio"]);
   md << gradientMarkdown(r["gradient"]);
   return md.str();
 }
@@ -236,6 +238,11 @@ void runDemo(const DemoArgs& args, const GlobalOptions& globals) {
   progress->advance(1);
   progress->end();
 
+  progress->begin("studio", 1);
+  report["studio"] = demoStudio(mesh, exemplar, cacheDir, render, out);
+  progress->advance(1);
+  progress->end();
+
   progress->begin("gradient solids", 1);
   report["gradient"] = demoGradientSolids(exemplar, globals.seed, cacheDir, out);
   progress->advance(1);
@@ -247,6 +254,7 @@ void runDemo(const DemoArgs& args, const GlobalOptions& globals) {
   say(globals, "wrote " + out("report.md") +
                    " with exemplar.png, gaussian_stack.png, mesh.png, mesh_solid.png, pixel_synthesis.png, "
                    "surface_synthesis.png, animation_frames.png, animation_lambdas.png, animation.gif, lazy_solid.png, "
+                   "studio_cut.png, "
                    "gradient_magnified.png, "
                    "gradient_edit.png, gradient_synthesized.png and gradient_solid.tsgs");
 }
@@ -259,7 +267,7 @@ Command registerDemoCommand(CLI::App& app, const GlobalOptions& globals) {
       "A tour on built-in defaults: analyse a real exemplar (GIMP's pink marble), render a real "
       "mesh (CGAL's bunny) plain and solid-textured, synthesize and score 2D textures, grow a "
       "texture on the mesh's surface, animate a texture along a flow, follow a sketched field with a lazy "
-      "solid and cut it open, vectorize "
+      "solid and cut it open, drive the studio's HTTP API, vectorize "
       "and edit a small gradient solid, and write a "
       "report with pictures into DIR");
   auto args = std::make_shared<DemoArgs>();

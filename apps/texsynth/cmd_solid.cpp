@@ -23,46 +23,12 @@
 #include "texsynth/render/glyph_mesh.h"
 #include "texsynth/render/render_mesh.h"
 #include "texsynth/solid/solid_consumers.h"
-#include "texsynth/solid/tile_blend_solid.h"
-#include "texsynth/solid/tile_deform_solid.h"
 
 namespace texsynth::cli {
 
 using nlohmann::json;
 
 namespace {
-
-// Records the points a consumer asks for (answering zeros), so that lazy synthesis can prepare
-// exactly those points before the consumer runs for real.
-class PointRecorder : public SolidTexture {
- public:
-  explicit PointRecorder(int channels) : channels_(channels) {}
-  std::string name() const override { return "point-recorder"; }
-  int channels() const override { return channels_; }
-  void evaluateSerial(std::span<const Vec3f> points, std::span<const Vec3f>, std::span<float> values) const override {
-    std::fill(values.begin(), values.end(), 0.0f);
-    std::lock_guard<std::mutex> lock(mutex_);
-    points_.insert(points_.end(), points.begin(), points.end());
-  }
-  std::vector<Vec3f> take() { return std::move(points_); }
-
- private:
-  int channels_;
-  mutable std::mutex mutex_;
-  mutable std::vector<Vec3f> points_;
-};
-
-// Runs `consume` on `solid`; a solid that synthesizes on demand first prepares exactly the
-// points the consumer will ask for.
-template <typename Consume>
-auto withPrepared(SolidTexture& solid, Progress& progress, Consume consume) {
-  if (solid.preparesOnDemand()) {
-    PointRecorder recorder(solid.channels());
-    consume(static_cast<const SolidTexture&>(recorder));
-    solid.prepare(recorder.take(), progress);
-  }
-  return consume(static_cast<const SolidTexture&>(solid));
-}
 
 // Three comma-separated values, or one for all three axes.
 Vec3f parseVec3(const std::string& text, const std::string& flag) {
@@ -140,7 +106,7 @@ void requireSolidMemory(const SolidArgs& args, const Box3f& box) {
 }
 
 std::unique_ptr<SolidTexture> makeSolid(const SolidArgs& args, const Mesh& mesh, const Box3f& box, std::uint64_t seed,
-                                        const GlobalOptions& globals, json& report, LazyBuild& lazy,
+                                        const GlobalOptions& globals, json& report, SolidBuild& build,
                                         std::shared_ptr<const GradientSolid>& gradient, Progress& synthesisProgress) {
   const std::string& exemplar = args.exemplars.front();
   if (args.method == "gradient") {  // a finished gradient solid or one synthesized now, spanning the box
@@ -161,49 +127,37 @@ std::unique_ptr<SolidTexture> makeSolid(const SolidArgs& args, const Mesh& mesh,
                                 {"detail", solid->hasDetail() && options.detail}};
     return makeGradientSolidTexture(std::move(solid), options);
   }
-  bool volumeExemplar = fileKind(exemplar) == FileKind::Volume;
-  Volume volume;
-  Image image;
-  if (volumeExemplar)
-    volume = readVolume(exemplar);
-  else
-    image = readImage(exemplar);
-  int tileSide = volumeExemplar ? std::max({volume.nx, volume.ny, volume.nz}) : std::max(image.width, image.height);
-  SolidPlacement placement = fitPlacement(box, tileSide, args.tiles);
-  if (args.method == "lazy") {
-    if (volumeExemplar) throw ParameterError("--method", "lazy takes 2D exemplars, not a volume");
-    lazy = makeLazySolid(args, mesh, box, placement, seed, report, synthesisProgress);
-    return std::move(lazy.texture);
-  }
-  if (args.exemplars.size() > 1)
+  // How many exemplars is a usage question (exit 2), asked before any file is read.
+  if (args.exemplars.size() == 2)
+    throw ParameterError("EXEMPLAR", "give one exemplar for all three planes, or three: XY YZ ZX");
+  if (args.exemplars.size() == 3 && args.method != "lazy")
     throw ParameterError("EXEMPLAR", "only --method lazy takes three exemplars (XY YZ ZX)");
-
-  if (args.method == "tile-blend") {
-    if (volumeExemplar) throw ParameterError("--method", "tile-blend takes a 2D exemplar, not a volume");
-    TileBlendSolidOptions options;
-    options.placement = placement;
-    options.tileSize = args.tileSize;
-    options.weightExponent = args.blendExponent;
-    options.blendSharpness = args.sharpness;
-    options.seed = seed;
-    report["variant"] = "triplanar tile-blend";
-    return makeTileBlendSolid(image, options);
+  SolidRecipe recipe;
+  recipe.method = parseSolidMethod(args.method);
+  if (fileKind(exemplar) == FileKind::Volume) {
+    if (args.exemplars.size() > 1) throw ParameterError("EXEMPLAR", "give one exemplar volume");
+    recipe.volume = readVolume(exemplar);
+  } else {
+    recipe.exemplars = readImages(args.exemplars);
   }
-  TileDeformSolidOptions options;
-  options.placement = placement;
-  Vec3f cell = parseVec3(args.cell, "--cell");
-  for (int a = 0; a < 3; ++a)
-    if (cell[a] == 0) cell[a] = 0.25f * tileSide;  // a quarter of the exemplar, as in 2D
-  options.deformation.cellSize = cell;
-  options.deformation.lambda = parseVec3(args.lambda, "--lambda");
-  options.deformation.clamp = args.clamp;
-  options.deformation.noiseScale = args.noiseScale;
-  options.deformation.seed = seed;
-  options.stacking = parseStack(args.stack);
-  options.blendSharpness = args.sharpness;
-  report["variant"] = volumeExemplar ? "method 1: 3D exemplar" : "method 2: 2D exemplar stacked along " + args.stack;
-  return volumeExemplar ? makeTileDeformSolid(std::move(volume), options)
-                        : makeStackedTileDeformSolid(std::move(image), options);
+  recipe.box = box;
+  recipe.tiles = args.tiles;
+  recipe.seed = seed;
+  recipe.tileBlend.tileSize = args.tileSize;
+  recipe.tileBlend.weightExponent = args.blendExponent;
+  recipe.tileBlend.blendSharpness = args.sharpness;
+  TileDeformSolidOptions& deform = recipe.tileDeform;
+  deform.deformation.cellSize = parseVec3(args.cell, "--cell");  // 0 on an axis: a quarter of the exemplar
+  deform.deformation.lambda = parseVec3(args.lambda, "--lambda");
+  deform.deformation.clamp = args.clamp;
+  deform.deformation.noiseScale = args.noiseScale;
+  deform.stacking = parseStack(args.stack);
+  deform.blendSharpness = args.sharpness;
+  if (recipe.method == SolidMethod::Lazy) fillLazyRecipe(args, mesh, recipe, report);
+  build = buildSolid(recipe, synthesisProgress);
+  if (!report.contains("variant")) report["variant"] = build.variant;
+  if (!build.lazyParts.empty()) report["coarsest_level"]["seconds"] = build.coarsestSeconds;
+  return std::move(build.texture);
 }
 
 // Which methods use each method-specific flag.
@@ -270,7 +224,9 @@ ParameterSources solidParameterSources(const SolidArgs& args) {
           {"gridCellSize", fromFlag("--grid-cell")},
           {"subpassGrid", fromFlag("--subpasses")},
           {"candidateCount", fromFlag("--candidates")},
-          {"depth", fromFlag("--shell")}};
+          {"depth", fromFlag("--shell")},
+          {"inner", fromFlag("--inner")},
+          {"method", fromFlag("--method")}};
 }
 
 void runSolid(const CLI::App& parser, SolidArgs& args, const GlobalOptions& globals) {
@@ -315,7 +271,7 @@ void runSolid(const CLI::App& parser, SolidArgs& args, const GlobalOptions& glob
     requireMemory(double(surfacePoints.size()) * (args.method == "lazy" ? 2500.0 : 64.0), "--surface",
                   "the " + std::to_string(surfacePoints.size()) + " voxels of the surface");
   }
-  LazyBuild lazy;
+  SolidBuild lazy;  // what the factory built; its lazy parts for the statistics
   std::shared_ptr<const GradientSolid> gradient;
   // Synthesis on demand (the lazy method's levels) reports apart from the outputs' stage.
   auto synthesisProgress = makeProgress(globals);
@@ -323,7 +279,7 @@ void runSolid(const CLI::App& parser, SolidArgs& args, const GlobalOptions& glob
       makeSolid(args, mesh, box, globals.seed, globals, report, lazy, gradient, *synthesisProgress);
   report["setup_seconds"] = lap();
   report["setup_peak_rss_mib"] = takePeakResidentMiB();
-  if (!lazy.parts.empty())  // the work so far: the coarsest level over the box (separate from what follows)
+  if (!lazy.lazyParts.empty())  // the work so far: the coarsest level over the box (separate from what follows)
     report["coarsest_level"]["lazy"] = lazyStats(lazy);
   if (args.surface > 0) {  // the whole surface at a resolution: synthesized and evaluated, for timing
     const std::vector<Vec3f>& points = surfacePoints;
@@ -336,7 +292,7 @@ void runSolid(const CLI::App& parser, SolidArgs& args, const GlobalOptions& glob
                          {"lookup_seconds", lap()},
                          {"peak_rss_mib", takePeakResidentMiB()}};
     // What the surface cost per level, apart from the requests that follow (the totals are "lazy").
-    if (!lazy.parts.empty()) report["surface"]["lazy"] = lazyStats(lazy);
+    if (!lazy.lazyParts.empty()) report["surface"]["lazy"] = lazyStats(lazy);
   }
 
   auto progress = makeProgress(globals);
@@ -365,7 +321,7 @@ void runSolid(const CLI::App& parser, SolidArgs& args, const GlobalOptions& glob
       writeMesh(out, colored);
     }
     report["outputs"].push_back({{"file", out}, {"seconds", lap()}, {"peak_rss_mib", takePeakResidentMiB()}});
-    if (!lazy.parts.empty()) report["outputs"].back()["lazy"] = lazyStats(lazy);  // totals so far
+    if (!lazy.lazyParts.empty()) report["outputs"].back()["lazy"] = lazyStats(lazy);  // totals so far
     progress->advance(1);
   }
   if (!args.render.empty()) {
@@ -392,7 +348,7 @@ void runSolid(const CLI::App& parser, SolidArgs& args, const GlobalOptions& glob
     progress->advance(1);
   }
   progress->end();
-  if (!lazy.parts.empty()) report["lazy"] = lazyStats(lazy);
+  if (!lazy.lazyParts.empty()) report["lazy"] = lazyStats(lazy);
   takePeakResidentMiB();
   report["peak_rss_mib"] = processPeakResidentMiB();
   if (!args.stats.empty()) writeFileAtomically(args.stats, report.dump(2) + "\n");

@@ -12,8 +12,7 @@
 #include "texsynth/geometry/surface_projector.h"
 #include "texsynth/io/image_io.h"
 #include "texsynth/render/glyph_mesh.h"
-#include "texsynth/solid/lazy_field.h"
-#include "texsynth/solid/lazy_solid_texture.h"
+#include "texsynth/solid/solid_factory.h"
 
 namespace texsynth::cli {
 
@@ -25,8 +24,21 @@ constexpr int kCurvePoints = 9;
 constexpr int kCutAxis = 0;  // x = half-way, the +x side removed
 constexpr float kCutFraction = 0.5f;
 
-// One curve over the top of the mesh along its longest horizontal side, snapped to the
-// surface: the exemplar's x follows it, its y the surface normal. Works on any mesh.
+json levelsJson(const LazySolid& solid, const std::vector<LazyLevelStats>& before) {
+  json levels = json::array();
+  for (int l = 0; l < solid.levels(); ++l) {
+    const LazyLevelStats& now = solid.stats()[std::size_t(l)];
+    const LazyLevelStats& was = before[std::size_t(l)];
+    levels.push_back({{"level", l},
+                      {"voxels", now.voxelsSynthesized - was.voxelsSynthesized},
+                      {"seconds", now.seconds - was.seconds},
+                      {"from_disk", now.fromDiskCache && !was.fromDiskCache}});
+  }
+  return levels;
+}
+
+}  // namespace
+
 Sketch sketchOverTheTop(const Mesh& mesh) {
   const Box3f box = mesh.bounds();
   const Vec3f size = box.size(), centre = 0.5f * (box.min + box.max);
@@ -49,21 +61,6 @@ Sketch sketchOverTheTop(const Mesh& mesh) {
   return sketch;
 }
 
-json levelsJson(const LazySolid& solid, const std::vector<LazyLevelStats>& before) {
-  json levels = json::array();
-  for (int l = 0; l < solid.levels(); ++l) {
-    const LazyLevelStats& now = solid.stats()[std::size_t(l)];
-    const LazyLevelStats& was = before[std::size_t(l)];
-    levels.push_back({{"level", l},
-                      {"voxels", now.voxelsSynthesized - was.voxelsSynthesized},
-                      {"seconds", now.seconds - was.seconds},
-                      {"from_disk", now.fromDiskCache && !was.fromDiskCache}});
-  }
-  return levels;
-}
-
-}  // namespace
-
 json demoLazySolid(const Mesh& mesh, const Image& exemplar, const std::string& exemplarName, std::uint64_t seed,
                    const std::string& cacheDirectory, const RenderOptions& render,
                    const std::vector<std::pair<float, float>>& views,
@@ -71,41 +68,40 @@ json demoLazySolid(const Mesh& mesh, const Image& exemplar, const std::string& e
   json section = {{"exemplar", exemplarName}};
   auto start = std::chrono::steady_clock::now();
   const Box3f box = mesh.bounds();
-  const SolidPlacement placement = fitPlacement(box, std::max(exemplar.width, exemplar.height));
-  LazySolidOptions options;
-  options.seed = seed;
-  options.cacheDirectory = cacheDirectory;
-  setLazyDomain(options, placement, box);
-  LazyOrientation orientation;
+  SolidRecipe recipe;
+  recipe.method = SolidMethod::Lazy;
+  recipe.exemplars = {exemplar};
+  recipe.box = box;
+  recipe.seed = seed;
+  recipe.lazy.levels = 0;  // as many as the exemplar allows, as the command line
+  recipe.lazy.cacheDirectory = cacheDirectory;
   const Sketch sketch = sketchOverTheTop(mesh);
   section["sketch_curves"] = sketch.curves.size();
-  if (!sketch.curves.empty()) {
-    const FieldDesign design = designField(mesh, sketch);
-    orientation = lazyOrientationFromField(design.rotations, placement, options.levels);
-    options.orientationKey = lazyOrientationKey(design.rotations, placement, options.levels);
-  }
+  if (!sketch.curves.empty()) recipe.field = std::make_shared<const RotationField>(designField(mesh, sketch).rotations);
   section["field_seconds"] = secondsSince(start);
 
   start = std::chrono::steady_clock::now();
-  auto solid = std::make_shared<LazySolid>(exemplar, options, orientation);
-  LazySolidTexture texture(solid, placement);
+  SolidBuild build = buildSolid(recipe);
+  SolidTexture& texture = *build.texture;
+  const LazySolid& solid = *build.lazyParts.front().second;
   const SurfaceColorFunction colorAt = [&texture](const std::vector<Vec3f>& points, const std::vector<Vec3f>& normals,
                                                   std::vector<Vec3f>& colors) {
     texture.prepare(points);
     colors = texture.evaluateColors(points, normals);
   };
-  std::vector<LazyLevelStats> before = solid->stats();
+  // The first picture's work from nothing: the coarsest level (built above) and what the views add.
+  std::vector<LazyLevelStats> before(solid.stats().size());
   const Image picture = renderViews(mesh, &colorAt, views, render);
   section["first_picture_seconds"] = secondsSince(start);
-  section["first_picture_levels"] = levelsJson(*solid, before);
+  section["first_picture_levels"] = levelsJson(solid, before);
 
   start = std::chrono::steady_clock::now();
-  before = solid->stats();
+  before = solid.stats();
   const MeshCut opened = cutOpenMesh(coloredCopy(mesh, render.defaultColor), kCutAxis, kCutFraction,
                                      box.size().maxCoeff() / 512.0f, render.defaultColor);
   const Image cut = renderViews(opened.mesh, &colorAt, {cutViewAngles(kCutAxis)}, render);
   section["cut_seconds"] = secondsSince(start);
-  section["cut_levels"] = levelsJson(*solid, before);
+  section["cut_levels"] = levelsJson(solid, before);
   writeImage(out("lazy_solid.png"), sideBySide({picture, cut}));
   return section;
 }

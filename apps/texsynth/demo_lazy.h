@@ -11,9 +11,15 @@
 
 #include "texsynth/core/image.h"
 #include "texsynth/core/mesh.h"
+#include "texsynth/field/sketch.h"
 #include "texsynth/render/render_mesh.h"
 
 namespace texsynth::cli {
+
+// One curve over the top of the mesh along its longest horizontal side, snapped to the surface:
+// the exemplar's x follows it, its y the surface normal. Works on any mesh (no curve if the mesh
+// is too small to hold one).
+Sketch sketchOverTheTop(const Mesh& mesh);
 
 // Writes lazy_solid.png (the views, then the cut) through `out`; returns the report's
 // "lazy_solid" section.

@@ -29,7 +29,7 @@ int main(int argc, char** argv) {
       cli::registerImageCommand(app, globals),   cli::registerSolidCommand(app, globals),
       cli::registerFieldCommand(app, globals),   cli::registerVectorizeCommand(app, globals),
       cli::registerEditCommand(app, globals),    cli::registerSurfaceCommand(app, globals),
-      cli::registerAnimateCommand(app, globals),
+      cli::registerAnimateCommand(app, globals), cli::registerStudioCommand(app, globals),
   };
   // Global flags may also follow the subcommand name.
   for (auto& command : commands) {

@@ -1,5 +1,6 @@
 #pragma once
-// The flags of `texsynth solid`, and the lazy method's construction (solid_lazy.cpp).
+// The flags of `texsynth solid`, and how they become a solid (the library's factory; solid_lazy.cpp and
+// solid_gradient.cpp for the methods with more to read).
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -8,8 +9,7 @@
 #include "cli_common.h"
 #include "texsynth/core/mesh.h"
 #include "texsynth/gradient/gradient_solid.h"
-#include "texsynth/solid/lazy_solid.h"
-#include "texsynth/solid/solid_texture.h"
+#include "texsynth/solid/solid_factory.h"
 
 namespace texsynth::cli {
 
@@ -38,16 +38,9 @@ struct SolidArgs {
   bool crossbar = true, regions = true, optimize = false;
 };
 
-// --method lazy: one LazySolid on the exemplars (one for all planes, or XY YZ ZX), guided by
-// --field or a field designed from --sketch on the mesh if given; with --inner and a mesh, a second one fills
-// everything deeper than --shell (a fraction of the mesh's bounding-box diagonal) below the surface. The coarsest level
-// is synthesized over all of `box` up front, for every later request to reuse.
-struct LazyBuild {
-  std::unique_ptr<SolidTexture> texture;
-  std::vector<std::pair<std::string, std::shared_ptr<LazySolid>>> parts;  // name, synthesis
-};
-LazyBuild makeLazySolid(const SolidArgs& args, const Mesh& mesh, const Box3f& box, const SolidPlacement& placement,
-                        std::uint64_t seed, nlohmann::json& report, Progress& progress);
+// --method lazy: the recipe's lazy part from the flags: options, --mask, the field of --field or of --sketch on the
+// mesh, and --inner below --shell.
+void fillLazyRecipe(const SolidArgs& args, const Mesh& mesh, SolidRecipe& recipe, nlohmann::json& report);
 
 // --method gradient with image exemplars: a gradient solid synthesized over `box` at --resolution (§4 of
 // gradient-solid-textures), following --field or the field of --sketch, with --inner's exemplar deeper than
@@ -57,6 +50,6 @@ std::shared_ptr<const GradientSolid> synthesizeGradient(const SolidArgs& args, c
                                                         nlohmann::json& report);
 
 // Per-level work of every lazy part, for --stats.
-nlohmann::json lazyStats(const LazyBuild& build);
+nlohmann::json lazyStats(const SolidBuild& build);
 
 }  // namespace texsynth::cli

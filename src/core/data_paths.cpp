@@ -21,12 +21,20 @@ std::string dataDirectory() {
   return TEXSYNTH_DATA_DIR;
 }
 
+std::string gimpPatternDirectory() {
+  return "/usr/share/gimp/2.0/patterns";
+}
+
+std::string cgalMeshDirectory() {
+  return (fs::path(dataDirectory()) / "meshes").string();
+}
+
 std::optional<std::string> gimpPattern(const std::string& relative) {
-  return existing(fs::path("/usr/share/gimp/2.0/patterns") / relative);
+  return existing(fs::path(gimpPatternDirectory()) / relative);
 }
 
 std::optional<std::string> cgalMesh(const std::string& name) {
-  return existing(fs::path(dataDirectory()) / "meshes" / name);
+  return existing(fs::path(cgalMeshDirectory()) / name);
 }
 
 std::optional<std::string> assimpInvalidModels() {

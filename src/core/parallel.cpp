@@ -20,6 +20,9 @@ void parallelForChunks(std::int64_t begin, std::int64_t end, std::int64_t grain,
                        const std::function<void(std::int64_t, std::int64_t)>& body) {
   if (end <= begin) return;
   if (grain < 1) grain = 1;
+  // One chunk runs here: waking the pool's threads for it costs more than small work itself
+  // (tens of microseconds per call in a VM; a multigrid cycle makes hundreds of such calls).
+  if (end - begin <= grain) return body(begin, end);
   tbb::parallel_for(tbb::blocked_range<std::int64_t>(begin, end, grain),
                     [&](const tbb::blocked_range<std::int64_t>& r) { body(r.begin(), r.end()); });
 }

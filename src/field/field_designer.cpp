@@ -247,6 +247,24 @@ CurveUpdate FieldDesigner::addFrames(const std::vector<Vec3f>& positions, const 
   return update;
 }
 
+HarmonicSolveStats FieldDesigner::setConstraints(const std::vector<std::pair<std::int64_t, Quatf>>& targets) {
+  for (const auto& [node, q] : targets)
+    if (node < 0 || node >= impl_->grid.nodeCount() || !q.coeffs().allFinite() || std::abs(q.norm() - 1.0f) > 1e-3f)
+      throw ParameterError("targets", "node " + std::to_string(node) + ": outside the grid or not a unit rotation");
+  impl_->solver.clearConstraints();
+  if (targets.empty()) {
+    impl_->values = FieldValues();
+    impl_->field = RotationField(impl_->grid);
+    impl_->hasField = false;
+    return {};
+  }
+  for (const auto& [node, q] : targets) impl_->solver.setConstraint(node, toVector(q));
+  const HarmonicSolveStats stats = impl_->solver.solve(impl_->values);
+  impl_->field = RotationField(impl_->grid, normalizeField(impl_->grid, impl_->values));
+  impl_->hasField = true;
+  return stats;
+}
+
 RotationField FieldDesigner::solveFromScratch() const {
   HarmonicSolver fresh(impl_->grid, impl_->options.solver);
   for (const auto& [node, target] : impl_->solver.constraints()) fresh.setConstraint(node, target);

@@ -178,11 +178,21 @@ struct HarmonicSolver::Impl {
   SparseOf<Smoothing> laplacianF, laplacianTF;
   std::vector<std::pair<std::int64_t, double>> penalties;  // w^2 at constrained nodes
 
+  mutable SmoothValues finestProductF;
+  mutable FieldValues finestProductD;
+  template <typename Scalar>
+  ValuesOf<Scalar>& finestProduct() const {
+    if constexpr (std::is_same_v<Scalar, Smoothing>)
+      return finestProductF;
+    else
+      return finestProductD;
+  }
+
   // y = (L^T L + w^2 S) x on the finest level.
   template <typename Scalar>
   void applyFinest(const SparseOf<Scalar>& l, const SparseOf<Scalar>& lt, const ValuesOf<Scalar>& x,
                    ValuesOf<Scalar>& y) const {
-    ValuesOf<Scalar> lx;
+    ValuesOf<Scalar>& lx = finestProduct<Scalar>();  // reused: no allocation per product
     multiply(l, x, lx);
     multiply(lt, lx, y);
     for (const auto& [node, penalty] : penalties) y.row(node) += Scalar(penalty) * x.row(node);
@@ -236,6 +246,14 @@ struct HarmonicSolver::Impl {
     dirty = false;
   }
 
+  // Per level, the buffers one visit of the W-cycle works in: reused across cycles and CG
+  // iterations, so a solve allocates (and page-faults) nothing after its first cycle.
+  struct CycleScratch {
+    SmoothValues product, residual, coarseResidual, coarseError, coarseProduct, second, correction;
+  };
+  mutable std::vector<CycleScratch> scratch;
+  mutable SmoothValues cycleInput, cycleOutput;
+
   // One W-cycle: an approximate inverse of the level's system applied to r.
   void wCycle(std::size_t l, const SmoothValues& r, SmoothValues& e) const {
     const Level& level = levels[l];
@@ -243,36 +261,37 @@ struct HarmonicSolver::Impl {
       e = coarsest.solve(r.cast<double>()).cast<Smoothing>();
       return;
     }
+    CycleScratch& s = scratch[l];
     e.setZero(r.rows(), 4);
     for (int k = 0; k < kSweeps; ++k) gaussSeidel(level.systemF, level.inverseDiagonalF, r, e, true);
-    SmoothValues product;
     if (l == 0)
-      applyFinest(laplacianF, laplacianTF, e, product);
+      applyFinest(laplacianF, laplacianTF, e, s.product);
     else
-      multiply(level.systemF, e, product);
+      multiply(level.systemF, e, s.product);
     const Level& coarse = levels[l + 1];
-    SmoothValues coarseResidual, coarseError, correction;
-    multiply(coarse.toCoarserF, SmoothValues(r - product), coarseResidual);
-    wCycle(l + 1, coarseResidual, coarseError);
+    s.residual = r - s.product;
+    multiply(coarse.toCoarserF, s.residual, s.coarseResidual);
+    wCycle(l + 1, s.coarseResidual, s.coarseError);
     // A second visit of the coarse level (a W-cycle): the linear interpolation is weak for a
     // fourth-order operator, and coarse work is cheap; this saves about a third of the CG
     // iterations. Two symmetric visits keep the preconditioner symmetric.
     if (l + 2 < levels.size()) {
-      SmoothValues coarseProduct, second;
-      multiply(coarse.systemF, coarseError, coarseProduct);
-      wCycle(l + 1, SmoothValues(coarseResidual - coarseProduct), second);
-      coarseError += second;
+      multiply(coarse.systemF, s.coarseError, s.coarseProduct);
+      s.coarseProduct = s.coarseResidual - s.coarseProduct;
+      wCycle(l + 1, s.coarseProduct, s.second);
+      s.coarseError += s.second;
     }
-    multiply(coarse.toFinerF, coarseError, correction);
-    e += correction;
+    multiply(coarse.toFinerF, s.coarseError, s.correction);
+    e += s.correction;
     for (int k = 0; k < kSweeps; ++k) gaussSeidel(level.systemF, level.inverseDiagonalF, r, e, false);
   }
 
   // The preconditioner on a double-precision residual.
   void precondition(const FieldValues& r, FieldValues& z) const {
-    SmoothValues e;
-    wCycle(0, r.cast<Smoothing>(), e);
-    z = e.cast<double>();
+    scratch.resize(levels.size());
+    cycleInput = r.cast<Smoothing>();
+    wCycle(0, cycleInput, cycleOutput);
+    z = cycleOutput.cast<double>();
   }
 
   HarmonicSolveStats solve(FieldValues& x) {
@@ -303,14 +322,13 @@ struct HarmonicSolver::Impl {
         Eigen::Vector4d pap = columnDots(p, ap), alpha;
         // A column already solved (all zero) has zero curvature: leave it alone.
         for (int c = 0; c < 4; ++c) alpha[c] = pap[c] > 0 ? rz[c] / pap[c] : 0.0;
-        const FieldValues step = p * alpha.asDiagonal();
-        x += step;
+        x += p * alpha.asDiagonal();  // coefficient-wise, no temporary
         r -= ap * alpha.asDiagonal();
         stats.iterations = it;
         stats.relativeResidual = relative();
         // The residual is dominated by the w^2-weighted constraint rows, so it says little about
         // the smooth part of the field; stop on the size of the step instead (values are O(1)).
-        stats.relativeStep = step.cwiseAbs().maxCoeff() / std::max(1e-300, x.cwiseAbs().maxCoeff());
+        stats.relativeStep = (p * alpha.asDiagonal()).cwiseAbs().maxCoeff() / std::max(1e-300, x.cwiseAbs().maxCoeff());
         if (stats.relativeStep <= options.tolerance) break;
         precondition(r, z);
         Eigen::Vector4d rzNew = columnDots(r, z), beta;

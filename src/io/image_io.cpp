@@ -187,6 +187,11 @@ ImageWriteOptions writeOptionsKeeping(const ImageFileInfo& input) {
   return options;
 }
 
+std::string encodePngBytes(const Image& image) {
+  if (image.empty()) throw ParameterError("image", "cannot encode an empty image");
+  return image_codec::encodePng(image, 8);
+}
+
 void writeImage(const std::string& path, const Image& image, const ImageWriteOptions& options) {
   auto format = formatFromExtension(fileExtension(path));
   if (!format)

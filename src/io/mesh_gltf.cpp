@@ -1,12 +1,14 @@
-// glTF 2.0 writer through tinygltf: one buffer holding POSITION, NORMAL, COLOR_0 (float vec3),
+// glTF 2.0 writer through tinygltf: one buffer holding POSITION, NORMAL, COLOR_0 (float vec3, linear),
 // TEXCOORD_0 (float vec2, from the "uv" attribute with v flipped: glTF's origin is the top left)
 // and uint32 indices, one triangle primitive, and a material whose white base color lets the
 // vertex colors show unchanged (non-metallic, fully rough, so viewers do not darken it).
 #include <tiny_gltf.h>
 
+#include <algorithm>
 #include <sstream>
 
 #include "mesh_write_support.h"
+#include "texsynth/core/color.h"
 #include "texsynth/core/error.h"
 #include "texsynth/io/mesh_io.h"
 
@@ -85,7 +87,12 @@ tinygltf::Model buildModel(const Mesh& mesh) {
   primitive.mode = TINYGLTF_MODE_TRIANGLES;
   primitive.attributes["POSITION"] = addVec3Attribute(model, mesh.positions, true);
   primitive.attributes["NORMAL"] = addVec3Attribute(model, mesh.normals, false);
-  if (!mesh.colors.empty()) primitive.attributes["COLOR_0"] = addVec3Attribute(model, mesh.colors, false);
+  if (!mesh.colors.empty()) {  // glTF colours are linear; texsynth's are sRGB-encoded like its images
+    std::vector<Vec3f> linear(mesh.colors.size());
+    for (std::size_t i = 0; i < linear.size(); ++i)
+      for (int c = 0; c < 3; ++c) linear[i][c] = srgbToLinear(std::clamp(mesh.colors[i][c], 0.0f, 1.0f));
+    primitive.attributes["COLOR_0"] = addVec3Attribute(model, linear, false);
+  }
   if (auto uv = mesh.attributes.find(kUvAttribute); uv != mesh.attributes.end() && uv->second.components == 2)
     primitive.attributes["TEXCOORD_0"] = addTexcoordAttribute(model, uv->second.values);
   primitive.indices = addIndices(model, mesh.triangles);

@@ -11,6 +11,7 @@
 #include <functional>
 #include <limits>
 
+#include "texsynth/core/color.h"
 #include "texsynth/core/error.h"
 #include "texsynth/io/mesh_io.h"
 
@@ -158,8 +159,11 @@ void addPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& primi
     const AccessorReader colors(model, color->second, source, "COLOR_0");
     if (colors.count() != count || (colors.components() != 3 && colors.components() != 4))
       colors.fail("does not have one vec3 or vec4 per vertex");
+    // glTF colours are linear; texsynth's are sRGB-encoded like its images.
     for (std::size_t i = 0; i < count; ++i)
-      out.mesh.colors[base + i] = Vec3f(colors.value(i, 0), colors.value(i, 1), colors.value(i, 2));
+      out.mesh.colors[base + i] =
+          Vec3f(linearToSrgb(float(colors.value(i, 0))), linearToSrgb(float(colors.value(i, 1))),
+                linearToSrgb(float(colors.value(i, 2))));
   }
   std::vector<std::uint32_t> indices;
   if (primitive.indices >= 0) {

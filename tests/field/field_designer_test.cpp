@@ -206,3 +206,18 @@ TEST(FieldDesigner, RejectsBadCurvesAndOptions) {
   bad = smallGrid(1);
   test::expectParameterError([&] { FieldDesigner(unitCube(), bad); }, "shortestCells");
 }
+
+// Undo in the studio: the field solved again from recorded targets, or the identity without any.
+TEST(FieldDesigner, SetConstraintsSolvesFromTheGivenTargets) {
+  FieldDesigner d = twoCurveDesigner();
+  const RotationField before = d.field();
+  const auto targets = d.constraints();
+  d.setConstraints(targets);
+  for (std::int64_t n = 0; n < d.grid().nodeCount(); n += 7)
+    EXPECT_GT(std::abs(before.at(n).dot(d.field().at(n))), 0.9999f) << "node " << n;
+  d.setConstraints({});
+  EXPECT_FALSE(d.hasField());
+  EXPECT_EQ(d.field().at(0).coeffs(), Quatf::Identity().coeffs());
+  test::expectParameterError([&] { d.setConstraints({{-1, Quatf::Identity()}}); }, "targets");
+  test::expectParameterError([&] { d.setConstraints({{0, Quatf(2, 0, 0, 0)}}); }, "targets");
+}

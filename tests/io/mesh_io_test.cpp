@@ -9,6 +9,7 @@
 #include "mesh_test_helpers.h"
 #include "test_support.h"
 #include "texsynth/core/atomic_file.h"
+#include "texsynth/core/color.h"
 #include "texsynth/core/data_paths.h"
 #include "texsynth/core/error.h"
 
@@ -255,7 +256,10 @@ TEST(MeshRoundTrip, GltfBinaryAndTextLoadInTinyGltf) {
     EXPECT_EQ(primitive.mode, TINYGLTF_MODE_TRIANGLES);
     EXPECT_EQ(vec3Data(model, primitive.attributes.at("POSITION")), cube.positions);
     EXPECT_EQ(vec3Data(model, primitive.attributes.at("NORMAL")), cube.normals);
-    EXPECT_EQ(vec3Data(model, primitive.attributes.at("COLOR_0")), cube.colors);
+    std::vector<Vec3f> linear = cube.colors;  // glTF stores linear colours
+    for (Vec3f& c : linear)
+      for (int k = 0; k < 3; ++k) c[k] = srgbToLinear(c[k]);
+    EXPECT_EQ(vec3Data(model, primitive.attributes.at("COLOR_0")), linear);
     const tinygltf::Accessor& indices = model.accessors.at(std::size_t(primitive.indices));
     EXPECT_EQ(indices.count, 3 * cube.triangleCount());
     EXPECT_EQ(indices.componentType, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT);

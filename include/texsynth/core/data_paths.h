@@ -8,6 +8,10 @@ namespace texsynth {
 
 // Directory of extracted data; $TEXSYNTH_DATA overrides the build-time default.
 std::string dataDirectory();
+// Where GIMP's patterns (one folder per category) and the extracted CGAL meshes live; the folders
+// may be missing.
+std::string gimpPatternDirectory();
+std::string cgalMeshDirectory();
 // A GIMP pattern by relative name, e.g. "Stone/marble1.pat", if installed.
 std::optional<std::string> gimpPattern(const std::string& relative);
 // A CGAL demo mesh by file name, e.g. "bunny00.off", if extracted.

@@ -66,6 +66,12 @@ class FieldDesigner {
   // the grid (ParameterError("positions", ...) otherwise).
   CurveUpdate addFrames(const std::vector<Vec3f>& positions, const std::vector<Quatf>& rotations);
 
+  // Replaces every constraint by these node targets, signs as given, and solves once: undoing a
+  // curve keeps the targets the remaining curves set (in their order, later ones winning on shared
+  // nodes) without re-deriving them curve by curve. No targets: the identity field again. Throws
+  // ParameterError("targets", ...) for a node outside the grid or a non-unit rotation.
+  HarmonicSolveStats setConstraints(const std::vector<std::pair<std::int64_t, Quatf>>& targets);
+
   const FieldGrid& grid() const;
   // The current field; identity everywhere before the first curve.
   const RotationField& field() const;

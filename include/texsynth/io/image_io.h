@@ -64,4 +64,7 @@ ImageWriteOptions writeOptionsKeeping(const ImageFileInfo& input);
 // options; OutputError if the file cannot be written.
 void writeImage(const std::string& path, const Image& image, const ImageWriteOptions& options = {});
 
+// The bytes of an 8-bit PNG of the image (1-4 channels), as writeImage would store them.
+std::string encodePngBytes(const Image& image);
+
 }  // namespace texsynth
