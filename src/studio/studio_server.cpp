@@ -228,10 +228,6 @@ int StudioServer::start() {
   return impl_->port;
 }
 
-void StudioServer::wait() {
-  if (impl_->listener.joinable()) impl_->listener.join();
-}
-
 void StudioServer::stop() {
   impl_->state.events.close();  // event streams end, so their threads return
   impl_->http.stop();

@@ -39,8 +39,6 @@ class StudioServer {
   // Binds and serves on background threads; returns the port. Throws OutputError when the
   // address cannot be bound.
   int start();
-  // Blocks until stop() (from another thread or a signal handler's thread).
-  void wait();
   void stop();
 
   EventHub& events();

@@ -40,7 +40,6 @@ class KeptSolid {
     std::lock_guard<std::mutex> lock(prepare_);
     return withPrepared(*build_.texture, progress, consume);
   }
-  const SolidBuild& build() const { return build_; }
 
  private:
   SolidBuild build_;
