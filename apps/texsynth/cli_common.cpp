@@ -85,6 +85,16 @@ std::pair<float, float> parseFloatPair(const std::string& text, const std::strin
   return {a, parts.size() == 2 ? parseNumber<float>(parts[1], flag, text) : a};
 }
 
+Vec3f parseFloatTriple(const std::string& text, const std::string& flag, bool oneForAll) {
+  const auto parts = splitCommas(text);
+  if (oneForAll && parts.size() == 1) return Vec3f::Constant(parseNumber<float>(parts[0], flag, text));
+  if (parts.size() != 3)
+    throw ParameterError(flag,
+                         "'" + text + "': give three numbers X,Y,Z" + (oneForAll ? " (or one for all three)" : ""));
+  return {parseNumber<float>(parts[0], flag, text), parseNumber<float>(parts[1], flag, text),
+          parseNumber<float>(parts[2], flag, text)};
+}
+
 std::pair<int, float> parseAxisPosition(const std::string& text, const std::string& flag, bool openInterval) {
   if (text.size() < 3 || text[1] != '=' || (text[0] != 'x' && text[0] != 'y' && text[0] != 'z'))
     throw ParameterError(flag, "'" + text + "': expected AXIS=POSITION, e.g. z=0.5");
@@ -171,13 +181,33 @@ void say(const GlobalOptions& globals, const std::string& message) {
   if (!globals.quiet) std::fprintf(stderr, "%s\n", message.c_str());
 }
 
+namespace {
+std::vector<std::function<void()>>& messagesWhenCommitted() {
+  static std::vector<std::function<void()>> messages;
+  return messages;
+}
+}  // namespace
+
+void sayWhenCommitted(const GlobalOptions& globals, const std::string& message) {
+  if (!globals.quiet) messagesWhenCommitted().push_back([message] { std::fprintf(stderr, "%s\n", message.c_str()); });
+}
+
+void printJsonWhenCommitted(const nlohmann::json& document) {
+  messagesWhenCommitted().push_back([document] { printJson(document); });
+}
+
+void sayCommitted() {
+  for (const auto& message : messagesWhenCommitted()) message();
+  messagesWhenCommitted().clear();
+}
+
 void finishReport(const GlobalOptions& globals, const nlohmann::json& report, const std::string& statsFile,
                   const std::string& summary) {
   if (!statsFile.empty()) writeFileAtomically(statsFile, report.dump(2) + "\n");
   if (globals.json)
-    printJson(report);
+    printJsonWhenCommitted(report);
   else
-    say(globals, summary);
+    sayWhenCommitted(globals, summary);
 }
 
 }  // namespace texsynth::cli

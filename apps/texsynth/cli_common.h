@@ -8,6 +8,7 @@
 #include <string>
 
 #include "parameter_sources.h"
+#include "texsynth/core/math.h"
 #include "texsynth/core/progress.h"
 #include "texsynth/eval/metrics.h"
 
@@ -52,6 +53,10 @@ Size2 parseSize(const std::string& text, const std::string& flag);
 // "A" or "A,B" (B defaults to A), each a finite number. Throws ParameterError naming `flag`.
 std::pair<float, float> parseFloatPair(const std::string& text, const std::string& flag);
 
+// "X,Y,Z" (or, with oneForAll, "V" for all three), each a finite number. Throws ParameterError
+// naming `flag` and quoting `text` whole.
+Vec3f parseFloatTriple(const std::string& text, const std::string& flag, bool oneForAll);
+
 // "z=0.5" -> (axis 2, 0.5): a plane across a box, for --slice (position in [0, 1]) and --cut
 // (openInterval: in (0, 1)). Throws ParameterError naming `flag`.
 std::pair<int, float> parseAxisPosition(const std::string& text, const std::string& flag, bool openInterval);
@@ -90,15 +95,24 @@ double processPeakResidentMiB();
 // checkFileArguments checks every output destination (its directory exists and is writable),
 // that no two outputs are the same file and that no output is one of the inputs, so a typo or a
 // slip costs nothing and no input is ever overwritten.
-CLI::Option* outputFiles(CLI::Option* option);
-CLI::Option* inputFiles(CLI::Option* option);
+// With `frames`, a value may be a frame pattern (frames/%04d.png): each frame's file, 0 .. *frames - 1,
+// is checked as a file of its own (a --flow preset is no file and collides with nothing).
+CLI::Option* outputFiles(CLI::Option* option, const int* frames = nullptr);
+CLI::Option* inputFiles(CLI::Option* option, const int* frames = nullptr);
 void checkFileArguments(const CLI::App& subcommand);
 
 // Short human-readable message on stderr, unless --quiet.
 void say(const GlobalOptions& globals, const std::string& message);
 
+// What a run says about its outputs ("wrote ...", its --json report) waits until main has moved
+// them all into place: a run that fails or is stopped first never claims to have written a file.
+// main calls sayCommitted once the commit succeeded.
+void sayWhenCommitted(const GlobalOptions& globals, const std::string& message);
+void printJsonWhenCommitted(const nlohmann::json& document);
+void sayCommitted();
+
 // A command's result: written to `statsFile` as JSON when one is given, then printed as JSON on stdout with
-// --json, else `summary` on stderr.
+// --json, else `summary` on stderr, both once the run's outputs are committed.
 void finishReport(const GlobalOptions& globals, const nlohmann::json& report, const std::string& statsFile,
                   const std::string& summary);
 

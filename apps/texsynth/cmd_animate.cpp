@@ -9,6 +9,7 @@
 #include "mode_flags.h"
 #include "number_checks.h"
 #include "surface_setup.h"
+#include "texsynth/animation/flow_limits.h"
 #include "texsynth/animation/image_animation.h"
 #include "texsynth/animation/image_flow.h"
 #include "texsynth/animation/surface_animation.h"
@@ -43,6 +44,20 @@ const std::vector<ModeFlag> kAnimateModeFlags = {
     {"--size", {"image"}}, {"--vertices", {"mesh"}}, {"--field", {"mesh"}},       {"--sketch", {"mesh"}},
     {"--up", {"mesh"}},    {"--camera", {"mesh"}},   {"--render-size", {"mesh"}},
 };
+
+// --flow checked as typed: a preset's keys and values, or a well-formed file pattern.
+CLI::Validator flowSpecification() {
+  return CLI::Validator(
+      [](std::string& spec) -> std::string {
+        try {
+          checkFlowSpecification(spec);
+        } catch (const ParameterError& e) {
+          return e.problem();
+        }
+        return {};
+      },
+      "SPEC");
+}
 
 json frameJson(const FrameStatistics& s) {
   return {{"frame", s.frame},
@@ -137,6 +152,7 @@ void runSurfaceAnimation(const CLI::App& parser, const AnimateArgs& args, const 
   setupArgs.exemplar = args.exemplar, setupArgs.mesh = args.mesh, setupArgs.field = args.field;
   setupArgs.sketch = args.sketch, setupArgs.up = args.up, setupArgs.vertices = args.vertices;
   setupArgs.levels = args.levels, setupArgs.levelsGiven = parser.count("--levels") > 0;
+  setupArgs.verticesGiven = parser.count("--vertices") > 0;
   json report;
   auto progress = makeProgress(globals);
   const SurfaceSetup setup = setUpSurface(setupArgs, globals, report, *progress);
@@ -236,7 +252,8 @@ ParameterSources animateParameterSources(const AnimateArgs& args) {
           {"vertices", fromFlag("--vertices")},
           {"levels", fromFlag("--levels")},
           {"levelCount", fromFlag("--levels")},
-          {"guide", fromFlag("--up")}};
+          {"guide", fromFlag("--up")},
+          {"flowScale", fromFlag("--flow-scale")}};
 }
 
 }  // namespace
@@ -262,25 +279,30 @@ Command registerAnimateCommand(CLI::App& app, const GlobalOptions& globals) {
       "vortex.mp4");
   auto args = std::make_shared<AnimateArgs>();
   inputFiles(sub->add_option("EXEMPLAR", args->exemplar, "Exemplar image"))->required();
-  sub->add_option("--flow", args->flow, "Velocity field: a preset (see above) or a velocity file / pattern")
-      ->required();
-  sub->add_option("-o,--output", args->outputs,
-                  "frames/%04d.png, colors/%04d.ply (--mesh), anim.mp4 / .webm / .gif; may be repeated");
+  inputFiles(sub->add_option("--flow", args->flow, "Velocity field: a preset (see above) or a velocity file / pattern")
+                 ->required()
+                 ->check(flowSpecification()),
+             &args->frames);
+  outputFiles(sub->add_option("-o,--output", args->outputs,
+                              "frames/%04d.png, colors/%04d.ply (--mesh), anim.mp4 / .webm / .gif; may be repeated"),
+              &args->frames);
   sub->add_option("--frames", args->frames, "Frames to make (frame 0 included)")
       ->capture_default_str()
       ->check(integerIn(1, 100000));
   sub->add_option("--coherence", args->coherence,
                   "lambda of E_c: weight of the previous frame carried along the flow against the texture votes (0 = "
                   "independent frames)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(finiteIn(0, kMaxFlowCoherence));
   sub->add_option("--iterations", args->iterations, "E+M steps per frame at the finest level")
       ->capture_default_str()
       ->check(integerIn(1, 20));
   sub->add_option("--fps", args->fps, "Frames per second of the videos")
       ->capture_default_str()
-      ->check(CLI::Range(1.0f, 240.0f));
+      ->check(finiteIn(1, 240));
   sub->add_option("--flow-scale", args->flowScale, "Multiplies every velocity (to slow down or reverse a flow)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(finiteIn(-kMaxFlowScale, kMaxFlowScale));
   sub->add_option("--size", args->size, "Output size in 2D, WxH or N (multiples of 4; the animation tiles)")
       ->capture_default_str();
   sub->add_option("--levels", args->levels, "Levels of frame 0's synthesis (default 3, fewer for a small exemplar)")

@@ -250,8 +250,9 @@ void runDemo(const DemoArgs& args, const GlobalOptions& globals) {
 
   writeFileAtomically(out("report.json"), report.dump(2) + "\n");
   writeFileAtomically(out("report.md"), markdownReport(report));
-  if (globals.json) printJson(report);
-  say(globals, "wrote " + out("report.md") +
+  if (globals.json) printJsonWhenCommitted(report);
+  sayWhenCommitted(
+      globals, "wrote " + out("report.md") +
                    " with exemplar.png, gaussian_stack.png, mesh.png, mesh_solid.png, pixel_synthesis.png, "
                    "surface_synthesis.png, animation_frames.png, animation_lambdas.png, animation.gif, lazy_solid.png, "
                    "studio_cut.png, "

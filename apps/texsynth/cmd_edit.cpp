@@ -27,12 +27,7 @@ Vec3f parseColor(const std::string& text) {
     }
     return color;
   }
-  if (std::count(text.begin(), text.end(), ',') != 2)
-    throw ParameterError("--color", "'" + text + "': give R,G,B in [0,1] or #rrggbb");
-  const std::size_t second = text.rfind(',');
-  const auto rg = parseFloatPair(text.substr(0, second), "--color");
-  const float b = parseFloatPair(text.substr(second + 1), "--color").first;
-  const Vec3f color(rg.first, rg.second, b);
+  const Vec3f color = parseFloatTriple(text, "--color", false);
   for (int c = 0; c < 3; ++c)
     if (!(color[c] >= 0.0f && color[c] <= 1.0f))
       throw ParameterError("--color", "'" + text + "': each of R,G,B must be in [0,1]");

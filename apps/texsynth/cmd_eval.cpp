@@ -7,6 +7,7 @@
 #include "mode_flags.h"
 #include "number_checks.h"
 #include "texsynth/eval/metrics.h"
+#include "texsynth/io/color_values.h"
 #include "texsynth/io/file_kind.h"
 #include "texsynth/io/image_io.h"
 #include "texsynth/io/mesh_io.h"
@@ -78,7 +79,9 @@ Command registerEvalCommand(CLI::App& app, const GlobalOptions& globals) {
                              "A synthesized image, a volume (" + readableVolumeExtensions() +
                                  "), or a mesh with vertex colors (" + readableMeshExtensions() + ")"))
       ->required();
-  sub->add_option("--patch", args->options.patchSize, "Patch size (odd) for coherence, completeness and periodicity")
+  sub->add_option("--patch", args->options.patchSize,
+                  "Patch size (odd) for coherence, completeness and periodicity; at most the shortest side of the "
+                  "images (of a volume's slices)")
       ->capture_default_str()
       ->check(integerIn(1, 63));
   sub->add_option("--periodicity-samples", args->options.periodicitySamples, "Output patches sampled for periodicity")
@@ -113,7 +116,8 @@ Command registerEvalCommand(CLI::App& app, const GlobalOptions& globals) {
                                     {"--periodicity-samples", {"image OUTPUTs", "volume OUTPUTs"}}},
                                    mode, phrase);
             args->options.seed = globals.seed;
-            Image exemplar = readImage(args->exemplar);
+            // Colour images: a NaN or 1e30 in an EXR is the file's fault, not a metric to report.
+            Image exemplar = readColorImage(args->exemplar);
             json report = {{"exemplar", args->exemplar}, {"output", args->output}, {"patch", args->options.patchSize}};
             if (mesh) {
               args->surface.patchSize = args->options.patchSize;
@@ -134,7 +138,8 @@ Command registerEvalCommand(CLI::App& app, const GlobalOptions& globals) {
               return;
             }
             if (volume) {
-              VolumeQuality q = evaluateVolume(exemplar, readVolume(args->output), args->options);
+              auto progress = makeProgress(globals);  // many slices with large patches take a while
+              VolumeQuality q = evaluateVolume(exemplar, readVolume(args->output), args->options, *progress);
               report["x"] = toJson(q.axis[0]);
               report["y"] = toJson(q.axis[1]);
               report["z"] = toJson(q.axis[2]);
@@ -147,7 +152,7 @@ Command registerEvalCommand(CLI::App& app, const GlobalOptions& globals) {
               printRow("mean", q.mean);
               return;
             }
-            QualityMetrics m = evaluateImage(exemplar, readImage(args->output), args->options);
+            QualityMetrics m = evaluateImage(exemplar, readColorImage(args->output), args->options);
             report["metrics"] = toJson(m);
             if (globals.json) return printJson(report);
             std::printf("coherence    %8.3f   (lower is better)\n", m.coherence);

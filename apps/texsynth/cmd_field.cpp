@@ -140,8 +140,9 @@ Command registerFieldCommand(CLI::App& app, const GlobalOptions& globals) {
                                std::to_string(u.solve.iterations) + " CG iterations, " +
                                std::to_string(int(std::lround(1000 * u.seconds))) + " ms");
             }
-            say(globals, "wrote " + args->output + " (" + std::to_string(grid.nodes.x()) + "x" +
-                             std::to_string(grid.nodes.y()) + "x" + std::to_string(grid.nodes.z()) + " nodes)");
+            sayWhenCommitted(globals, "wrote " + args->output + " (" + std::to_string(grid.nodes.x()) + "x" +
+                                          std::to_string(grid.nodes.y()) + "x" + std::to_string(grid.nodes.z()) +
+                                          " nodes)");
             if (!args->render.empty()) {
               std::vector<std::vector<Vec3f>> curves;
               for (const auto& samples : design.curveSamples) {
@@ -149,11 +150,11 @@ Command registerFieldCommand(CLI::App& app, const GlobalOptions& globals) {
                 for (const CurveSample& s : samples) curves.back().push_back(s.position);
               }
               writeImage(args->render, renderFieldGlyphs(mesh, design.rotations, curves, renderOptions));
-              say(globals, "wrote " + args->render);
+              sayWhenCommitted(globals, "wrote " + args->render);
               report["render"] = args->render;
             }
             report["output"] = args->output;
-            if (globals.json) printJson(report);
+            if (globals.json) printJsonWhenCommitted(report);
           },
           sources, "--grid or --render-size"};
 }

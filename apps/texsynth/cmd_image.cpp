@@ -199,12 +199,12 @@ void finish(const ImageArgs& args, const GlobalOptions& globals, const ImageFile
   report["seconds"] = seconds;
   report["megapixels_per_second"] = double(window.width) * window.height / 1e6 / std::max(seconds, 1e-9);
   report["output"] = args.output;
-  if (globals.json) return printJson(report);
+  if (globals.json) return printJsonWhenCommitted(report);
   char line[160];
   std::snprintf(line, sizeof line, "wrote %s (%dx%d, %s, %.3f s)%s", args.output.c_str(), window.width, window.height,
                 report["method"].get<std::string>().c_str(), seconds,
                 report["made_tileable"].get<bool>() ? "; exemplar made tileable first" : "");
-  say(globals, line);
+  sayWhenCommitted(globals, line);
 }
 
 }  // namespace
@@ -292,12 +292,12 @@ Command registerImageCommand(CLI::App& app, const GlobalOptions& globals) {
                   "optimize (discrete): weight of the exemplar-coverage term, which makes over-used exemplar regions "
                   "cost more and unused ones less so that no part of the exemplar is dropped (default 0.15; 0 = the "
                   "plain energy)")
-      ->check(CLI::Range(0.0, 100.0));
+      ->check(finiteIn(0, 100));
   sub->add_option("--vote-exponent", args->voteExponent,
                   "optimize (discrete): the E-step weighs each match's vote by (its mean color distance per pixel + "
                   "0.01)^-E, so well-aligned matches decide and thin features survive (default 4; 0 = equal votes, "
                   "Han et al.)")
-      ->check(CLI::Range(0.0, 16.0));
+      ->check(finiteIn(0, 16));
   sub->add_option("--start", args->start,
                   "optimize (discrete): start from the parallel method's result (keeps every part of the exemplar, "
                   "no lattice), from random exemplar patches, or from random pixels (Han et al.)")
@@ -310,7 +310,7 @@ Command registerImageCommand(CLI::App& app, const GlobalOptions& globals) {
                   "parallel: start at the coarsest level whose neighborhood spans at most this fraction of the "
                   "exemplar's smaller side, from random coordinates (default 0.5; 0 = Lefebvre & Hoppe 2005's "
                   "coarsest level from the tiled exemplar, which keeps tileable exemplars on a lattice)")
-      ->check(CLI::Range(0.0, 16.0));
+      ->check(finiteIn(0, 16));
   sub->add_option("--subpasses", args->subpasses,
                   "parallel: s, for s^2 subpasses per correction pass (1 = all pixels at once)")
       ->capture_default_str()

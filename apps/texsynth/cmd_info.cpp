@@ -8,6 +8,7 @@
 #include "texsynth/io/file_kind.h"
 #include "texsynth/io/image_io.h"
 #include "texsynth/io/mesh_io.h"
+#include "texsynth/io/readable_file.h"
 #include "texsynth/io/volume_io.h"
 
 namespace texsynth::cli {
@@ -132,6 +133,7 @@ Command registerInfoCommand(CLI::App& app, const GlobalOptions& globals) {
       ->required();
   return {sub,
           [path, &globals] {
+            requireReadableFile(*path);  // a missing file or a directory is that, not an unknown type
             json d;
             switch (fileKind(*path)) {
               case FileKind::Image:

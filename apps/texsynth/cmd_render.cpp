@@ -105,7 +105,7 @@ Command registerRenderCommand(CLI::App& app, const GlobalOptions& globals) {
                                                   ") or a gradient solid (.tsgs)");
             }
             writeImage(args->output, picture);
-            say(globals, "wrote " + args->output);
+            sayWhenCommitted(globals, "wrote " + args->output);
           },
           sources, "--size or --supersample"};
 }

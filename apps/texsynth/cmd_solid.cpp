@@ -30,15 +30,6 @@ using nlohmann::json;
 
 namespace {
 
-// Three comma-separated values, or one for all three axes.
-Vec3f parseVec3(const std::string& text, const std::string& flag) {
-  std::size_t commas = std::count(text.begin(), text.end(), ',');
-  if (commas == 0) return Vec3f::Constant(parseFloatPair(text, flag).first);
-  if (commas != 2) throw ParameterError(flag, "'" + text + "': give one value or three (X,Y,Z)");
-  auto xy = parseFloatPair(text.substr(0, text.rfind(',')), flag);
-  return {xy.first, xy.second, parseFloatPair(text.substr(text.rfind(',') + 1), flag).first};
-}
-
 StackAxes parseStack(const std::string& text) {
   if (text == "x") return StackAxes::X;
   if (text == "y") return StackAxes::Y;
@@ -147,8 +138,8 @@ std::unique_ptr<SolidTexture> makeSolid(const SolidArgs& args, const Mesh& mesh,
   recipe.tileBlend.weightExponent = args.blendExponent;
   recipe.tileBlend.blendSharpness = args.sharpness;
   TileDeformSolidOptions& deform = recipe.tileDeform;
-  deform.deformation.cellSize = parseVec3(args.cell, "--cell");  // 0 on an axis: a quarter of the exemplar
-  deform.deformation.lambda = parseVec3(args.lambda, "--lambda");
+  deform.deformation.cellSize = parseFloatTriple(args.cell, "--cell", true);  // 0 on an axis: a quarter of the exemplar
+  deform.deformation.lambda = parseFloatTriple(args.lambda, "--lambda", true);
   deform.deformation.clamp = args.clamp;
   deform.deformation.noiseScale = args.noiseScale;
   deform.stacking = parseStack(args.stack);
@@ -197,7 +188,11 @@ const std::vector<ModeFlag> kSolidModeFlags = {
 // Where the library's parameters come from on `solid`'s command line.
 ParameterSources solidParameterSources(const SolidArgs& args) {
   return {{"exemplar", fromFiles(args.exemplars)},
+          {"exemplars", fromFiles(args.exemplars)},
+          {"exemplarCount", fromFlag("EXEMPLAR")},
           {"featureMask", fromFiles(args.masks)},
+          {"masks", fromFiles(args.masks)},
+          {"maskCount", fromFlag("--mask")},
           {"bounds", fromFile(args.mesh)},
           {"box", fromFile(args.mesh)},
           {"mesh", fromFile(args.mesh)},
@@ -353,11 +348,11 @@ void runSolid(const CLI::App& parser, SolidArgs& args, const GlobalOptions& glob
   report["peak_rss_mib"] = processPeakResidentMiB();
   if (!args.stats.empty()) writeFileAtomically(args.stats, report.dump(2) + "\n");
   if (globals.json)
-    printJson(report);
+    printJsonWhenCommitted(report);
   else
     for (const auto& out : report["outputs"])
-      say(globals,
-          "wrote " + out["file"].get<std::string>() + " (" + std::to_string(out["seconds"].get<double>()) + " s)");
+      sayWhenCommitted(globals, "wrote " + out["file"].get<std::string>() + " (" +
+                                    std::to_string(out["seconds"].get<double>()) + " s)");
 }
 
 }  // namespace

@@ -1,11 +1,12 @@
 // texsynth studio [MESH] [EXEMPLAR]: the interactive sketch-and-cut interface, served to the
-// browser from this machine until Ctrl-C.
+// browser from this machine until Ctrl-C (or SIGTERM): then it stops cleanly and dies of the signal.
 #include <malloc.h>
 #include <spawn.h>
 
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 
 #include "cli_common.h"
 #include "number_checks.h"
@@ -20,7 +21,7 @@ namespace {
 
 struct StudioArgs {
   std::string mesh, exemplar, host = "127.0.0.1", webRoot;
-  int port = 8080, workers = 2, uploadMiB = 64;
+  int port = 8080, workers = 2, uploadMiB = 64, keptUploads = 8;
   bool open = false;
 };
 
@@ -28,9 +29,15 @@ struct StudioArgs {
 #define TEXSYNTH_WEB_DIR "web"
 #endif
 
-std::string defaultWebRoot() {
+// The page's folder: the one given (--web-root, else $TEXSYNTH_WEB), which must hold the page, else
+// the source tree's web/ if it does; none serves the API alone.
+std::string webRoot(const StudioArgs& args) {
+  if (!args.webRoot.empty()) return args.webRoot;
   if (const char* env = std::getenv("TEXSYNTH_WEB"); env && *env) return env;
-  return TEXSYNTH_WEB_DIR;
+  std::error_code error;
+  return std::filesystem::is_regular_file(std::filesystem::path(TEXSYNTH_WEB_DIR) / "index.html", error)
+             ? TEXSYNTH_WEB_DIR
+             : "";
 }
 
 // Opens the page in the desktop's browser, if there is a desktop; the address is printed anyway.
@@ -41,6 +48,19 @@ void openBrowser(const std::string& url) {
     std::fprintf(stderr, "texsynth studio: no xdg-open here; open %s in a browser\n", url.c_str());
 }
 
+// After a clean shutdown, dies of the signal that asked for it, as the other commands do: whoever
+// started the studio (a shell, a service manager) tells a stop from a failure by it. The library's
+// handler, if installed (temporary_files.h), removes any temporaries first.
+[[noreturn]] void dieOf(int signal) {
+  std::fflush(nullptr);
+  sigset_t only;
+  sigemptyset(&only);
+  sigaddset(&only, signal);
+  std::raise(signal);  // pending while blocked in this thread
+  pthread_sigmask(SIG_UNBLOCK, &only, nullptr);
+  std::_Exit(128 + signal);  // only if the signal is ignored
+}
+
 void runStudio(const StudioArgs& args, const GlobalOptions& globals) {
   // Two malloc arenas instead of one per busy thread (the server runs up to 64): with one each,
   // freed buffers stayed spread over them and the process grew by ~50 MiB per minute of a 50-client
@@ -49,9 +69,10 @@ void runStudio(const StudioArgs& args, const GlobalOptions& globals) {
   studio::StudioOptions options;
   options.host = args.host;
   options.port = args.port;
-  options.webRoot = args.webRoot.empty() ? defaultWebRoot() : args.webRoot;
+  options.webRoot = webRoot(args);
   options.workers = args.workers;
   options.limits.meshBytes = std::size_t(args.uploadMiB) << 20;
+  options.limits.keptUploads = args.keptUploads;
   options.cacheDirectory = defaultCacheDirectory();
   options.mesh = args.mesh;
   options.exemplar = args.exemplar;
@@ -62,25 +83,27 @@ void runStudio(const StudioArgs& args, const GlobalOptions& globals) {
   sigaddset(&stopSignals, SIGINT);
   sigaddset(&stopSignals, SIGTERM);
   pthread_sigmask(SIG_BLOCK, &stopSignals, nullptr);
-  studio::StudioServer server(options);
-  const int port = server.start();
-  const std::string url =
-      "http://" + (args.host == "0.0.0.0" ? std::string("127.0.0.1") : args.host) + ":" + std::to_string(port) + "/";
-  if (args.host != "127.0.0.1" && args.host != "localhost" && args.host != "::1")
-    std::fprintf(stderr,
-                 "texsynth studio: listening on %s: anyone who can reach this address can use the studio (no "
-                 "login)\n",
-                 args.host.c_str());
-  if (globals.json)
-    std::printf("{\"url\": \"%s\", \"port\": %d}\n", url.c_str(), port);
-  else
-    std::printf("texsynth studio: %s  (Ctrl-C to stop)\n", url.c_str());
-  std::fflush(stdout);
-  if (args.open) openBrowser(url);
   int signal = 0;
-  sigwait(&stopSignals, &signal);
-  say(globals, "texsynth studio: stopping");
-  server.stop();
+  {
+    studio::StudioServer server(options);
+    const int port = server.start();
+    const std::string url =
+        "http://" + (args.host == "0.0.0.0" ? std::string("127.0.0.1") : args.host) + ":" + std::to_string(port) + "/";
+    if (args.host != "127.0.0.1" && args.host != "localhost" && args.host != "::1")
+      std::fprintf(stderr,
+                   "texsynth studio: listening on %s: anyone who can reach this address can use the studio (no "
+                   "login)\n",
+                   args.host.c_str());
+    if (globals.json)
+      std::printf("{\"url\": \"%s\", \"port\": %d}\n", url.c_str(), port);
+    else
+      std::printf("texsynth studio: %s  (Ctrl-C to stop)\n", url.c_str());
+    std::fflush(stdout);
+    if (args.open) openBrowser(url);
+    sigwait(&stopSignals, &signal);
+    say(globals, "texsynth studio: stopping");
+  }  // the server stops: connections close, jobs are cancelled, uploads removed
+  dieOf(signal);
 }
 
 }  // namespace
@@ -112,8 +135,14 @@ Command registerStudioCommand(CLI::App& app, const GlobalOptions& globals) {
   sub->add_option("--max-upload", args->uploadMiB, "Largest mesh upload, in MiB (exemplars: 16)")
       ->capture_default_str()
       ->check(integerIn(1, 1024));
+  sub->add_option("--keep-uploads", args->keptUploads,
+                  "Uploads of each kind (meshes, exemplars) kept, the most recently used; older ones are forgotten "
+                  "with their files (the scene's mesh and exemplar never)")
+      ->capture_default_str()
+      ->check(integerIn(1, 1000));
   sub->add_option("--web-root", args->webRoot,
-                  "Folder with the page (default: the source tree's web/, or $TEXSYNTH_WEB)");
+                  "Folder with the page, index.html (default: $TEXSYNTH_WEB, else the source tree's web/; without "
+                  "either, the API alone)");
   return {sub, [args, &globals] { runStudio(*args, globals); }, {{"mesh", fromFile(args->mesh)}}, ""};
 }
 

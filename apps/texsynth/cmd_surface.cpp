@@ -107,10 +107,17 @@ void runSurface(const CLI::App& parser, const SurfaceArgs& args, const GlobalOpt
   checkUsage(parser, args);
   if (!args.applyCoords.empty()) return runApplyCoords(args, globals);
   const auto start = std::chrono::steady_clock::now();
-  SurfaceSetupArgs setupArgs{args.exemplar,     args.mesh,       args.field,
-                             args.sketch,       args.up,         args.vertices,
-                             args.levels,       args.iterations, parser.count("--levels") > 0,
-                             !args.bake.empty()};
+  SurfaceSetupArgs setupArgs{args.exemplar,
+                             args.mesh,
+                             args.field,
+                             args.sketch,
+                             args.up,
+                             args.vertices,
+                             args.levels,
+                             args.iterations,
+                             parser.count("--levels") > 0,
+                             !args.bake.empty(),
+                             parser.count("--vertices") > 0};
   json report;
   auto progress = makeProgress(globals);
   SurfaceSetup setup = setUpSurface(setupArgs, globals, report, *progress);

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "cli_common.h"
+#include "parse_errors.h"
 #include "texsynth/core/error.h"
 #include "texsynth/core/output_batch.h"
 #include "texsynth/core/parallel.h"
@@ -44,7 +45,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "texsynth: %s\n", e.what());
+    const std::vector<std::string> arguments(argv + 1, argv + argc);
+    std::fprintf(stderr, "texsynth: %s\n", cli::describeParseError(e, app, arguments).c_str());
     return 2;
   }
 
@@ -56,7 +58,9 @@ int main(int argc, char** argv) {
         cli::checkFileArguments(*command.parser);  // every destination, before any work
         OutputBatch outputs;                       // all of the run's outputs, or none
         cli::runCommand(command);                  // errors name the user's flags and files
+        SignalsHeld held;  // a signal now waits: the outputs go into place and are reported, or neither
         outputs.commit();
+        cli::sayCommitted();
       }
     return 0;
   } catch (const ParameterError& e) {

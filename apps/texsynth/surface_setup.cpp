@@ -2,7 +2,6 @@
 // prepared surface.
 #include "surface_setup.h"
 
-#include <charconv>
 #include <cmath>
 #include <filesystem>
 
@@ -23,23 +22,7 @@ namespace texsynth::cli {
 using nlohmann::json;
 
 Vec3f parseDirection(const std::string& text, const std::string& flag) {
-  Vec3f direction;
-  std::size_t start = 0;
-  for (int axis = 0; axis < 3; ++axis) {
-    const std::size_t comma = axis < 2 ? text.find(',', start) : text.size();
-    float value = 0;
-    if (start < text.size() && text[start] == '+') ++start;  // from_chars takes no plus sign
-    const char* end = text.data() + std::min(comma, text.size());
-    bool parsed = comma != std::string::npos && comma > start;
-    if (parsed) {
-      const auto result = std::from_chars(text.data() + start, end, value);
-      parsed = result.ec == std::errc() && result.ptr == end;
-    }
-    if (!parsed || !std::isfinite(value) || (axis == 2 && text.find(',', start) != std::string::npos))
-      throw ParameterError(flag, "'" + text + "': give a direction as three finite numbers X,Y,Z (e.g. 0,1,0)");
-    direction[axis] = value;
-    start = comma + 1;
-  }
+  const Vec3f direction = parseFloatTriple(text, flag, false);
   if (!(direction.norm() > 0)) throw ParameterError(flag, "'" + text + "': the direction must not be zero");
   return direction;
 }
@@ -57,11 +40,40 @@ json historyJson(const std::vector<OptimizationIteration>& history) {
   return steps;
 }
 
+namespace {
+
+// The levels must fit both the exemplar's Gaussian stack and the mesh hierarchy; a shortfall
+// blames what the user typed (--levels alone, else --vertices).
+void checkLevels(const SurfaceSetupArgs& args, const MeshHierarchyOptions& hierarchy, int stackLevels) {
+  const std::string levels = std::to_string(hierarchy.levels);
+  if (hierarchy.levels > stackLevels)
+    throw ParameterError("--levels", levels + " is more than the " + std::to_string(stackLevels) +
+                                         " levels the Gaussian stack of " + args.exemplar + " has");
+  const int least = minimumFinestVertices(hierarchy.levels, hierarchy.ratio);
+  if (hierarchy.vertices >= least) return;
+  const std::string problem = std::to_string(hierarchy.vertices) + " vertices leave the coarsest of " + levels +
+                              " levels too few to retile: give at least " + std::to_string(least) +
+                              " vertices, or fewer levels";
+  throw ParameterError(args.levelsGiven && !args.verticesGiven ? "--levels" : "--vertices", problem);
+}
+
+}  // namespace
+
 SurfaceSetup setUpSurface(const SurfaceSetupArgs& args, const GlobalOptions& globals, json& report,
                           Progress& progress) {
   LapTimer timer;
   SurfaceSetup setup;
   setup.exemplar = readImage(args.exemplar);
+  TextureOptimizationOptions& options = setup.options;
+  options.seed = globals.seed;
+  // Without --levels, a small exemplar gets the levels its Gaussian stack has (as `image --method optimize`).
+  const int stackLevels = defaultStackLevelCount(setup.exemplar.width, setup.exemplar.height);
+  options.levels = args.levelsGiven ? args.levels : std::min(args.levels, stackLevels);
+  options.maxIterations = args.iterations;
+  MeshHierarchyOptions hierarchyOptions;
+  hierarchyOptions.vertices = args.vertices;
+  hierarchyOptions.levels = options.levels;
+  checkLevels(args, hierarchyOptions, stackLevels);  // before the mesh is read or anything analysed
   setup.input = readMesh(args.mesh);
   if (args.bakes && !setup.input.attributes.count(kUvAttribute))
     throw ParameterError("--bake", "'" + args.mesh +
@@ -71,16 +83,6 @@ SurfaceSetup setUpSurface(const SurfaceSetupArgs& args, const GlobalOptions& glo
   const WeldedMesh welded = weldCoincidentVertices(setup.input);
   if (welded.mesh.triangles.empty()) throw InputError(args.mesh, "every face has coinciding corners (zero area)");
 
-  TextureOptimizationOptions& options = setup.options;
-  options.seed = globals.seed;
-  // Without --levels, a small exemplar gets the levels its Gaussian stack has (as `image --method optimize`).
-  options.levels = args.levelsGiven
-                       ? args.levels
-                       : std::min(args.levels, defaultStackLevelCount(setup.exemplar.width, setup.exemplar.height));
-  options.maxIterations = args.iterations;
-  MeshHierarchyOptions hierarchyOptions;
-  hierarchyOptions.vertices = args.vertices;
-  hierarchyOptions.levels = options.levels;
   SurfaceOrientation orientation;
   if (!args.up.empty()) orientation.smooth.guide = parseDirection(args.up, "--up");
 

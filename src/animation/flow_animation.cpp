@@ -8,8 +8,9 @@
 namespace texsynth {
 
 void validateFlowAnimationOptions(const FlowAnimationOptions& options) {
-  if (!(options.coherence >= 0.0f) || !std::isfinite(options.coherence))
-    throw ParameterError("coherence", "must be a finite number >= 0, got " + std::to_string(options.coherence));
+  if (!(options.coherence >= 0.0f && options.coherence <= kMaxFlowCoherence))
+    throw ParameterError("coherence",
+                         "must be a finite number in [0, 1e+06], got " + std::to_string(options.coherence));
   if (options.iterations < 1 || options.iterations > 20)
     throw ParameterError("iterations", "must be in 1..20, got " + std::to_string(options.iterations));
   if (options.randomCandidates < 0 || options.randomCandidates > 1024)

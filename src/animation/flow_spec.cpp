@@ -6,7 +6,9 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "texsynth/animation/flow_limits.h"
 #include "texsynth/core/error.h"
+#include "texsynth/core/frame_pattern.h"
 
 namespace texsynth::flow_detail {
 namespace {
@@ -15,9 +17,11 @@ namespace {
   throw ParameterError("flow", problem);
 }
 
-std::string joined(std::span<const std::string_view> names) {
+// "a, b, c" of the items' names (presets or keys).
+template <class Items>
+std::string joinedNames(const Items& items) {
   std::string list;
-  for (std::string_view name : names) list += (list.empty() ? "" : ", ") + std::string(name);
+  for (const auto& item : items) list += (list.empty() ? "" : ", ") + std::string(item.name);
   return list;
 }
 
@@ -45,9 +49,7 @@ FlowSpec FlowSpec::parse(const std::string& spec, std::span<const PresetKeys> pr
   result.name_ = preset == presets.end() ? spec : name;
   if (preset == presets.end()) {
     if (!looksLikePath(spec)) {
-      std::vector<std::string_view> names;
-      for (const PresetKeys& p : presets) names.push_back(p.name);
-      failSpec("unknown preset '" + name + "' (" + joined(names) + ")");
+      failSpec("unknown preset '" + name + "' (" + joinedNames(presets) + ")");
     }
     result.file_ = true;
     return result;
@@ -63,12 +65,38 @@ FlowSpec FlowSpec::parse(const std::string& spec, std::span<const PresetKeys> pr
     if (equals == std::string_view::npos || equals == 0)
       result.fail("'" + text + "' is not key=value (in '" + spec + "')");
     const std::string value(item.substr(equals + 1));
-    if (std::find(preset->keys.begin(), preset->keys.end(), key) == preset->keys.end())
-      result.fail("unknown key '" + key + "' (" + joined(preset->keys) + ")");
+    const auto known =
+        std::find_if(preset->keys.begin(), preset->keys.end(), [&](const PresetKey& k) { return k.name == key; });
+    if (known == preset->keys.end()) result.fail("unknown key '" + key + "' (" + joinedNames(preset->keys) + ")");
     if (result.find(key)) result.fail("key '" + key + "' is given twice");
     result.settings_.emplace_back(key, value);
+    result.check(*known, value);
   }
   return result;
+}
+
+void FlowSpec::check(const PresetKey& key, const std::string& text) const {
+  const auto bound = [&](double value) {
+    if (key.whole) return std::to_string(std::uint64_t(value));
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", value);
+    return std::string(text);
+  };
+  // Built piecewise: GCC 12 warns falsely (-Wrestrict) on a chain of operator+ starting at a literal.
+  std::string range = "[";
+  range.append(bound(key.low)).append(", ").append(bound(key.high)).append("]");
+  double value = 0;
+  if (key.whole) {
+    std::uint64_t whole = 0;
+    if (!parseWhole(std::string_view(text), whole))
+      fail(std::string(key.name) + "='" + text + "' is not a whole number in " + range);
+    value = double(whole);
+  } else {
+    float number = 0;
+    if (!parseFiniteFloat(text, number)) fail(std::string(key.name) + "='" + text + "' is not a finite number");
+    value = number;
+  }
+  if (value < key.low || value > key.high) fail(std::string(key.name) + "=" + text + " is outside " + range);
 }
 
 const std::string* FlowSpec::find(std::string_view key) const {
@@ -79,17 +107,15 @@ const std::string* FlowSpec::find(std::string_view key) const {
 
 float FlowSpec::number(std::string_view key, float fallback) const {
   const std::string* text = find(key);
-  if (!text) return fallback;
-  float value = 0;
-  if (!parseFiniteFloat(*text, value)) fail(std::string(key) + "='" + *text + "' is not a finite number");
+  float value = fallback;
+  if (text) parseFiniteFloat(*text, value);
   return value;
 }
 
 std::uint64_t FlowSpec::integer(std::string_view key, std::uint64_t fallback) const {
   const std::string* text = find(key);
-  if (!text) return fallback;
-  std::uint64_t value = 0;
-  if (!parseWhole(*text, value)) fail(std::string(key) + "='" + *text + "' is not an integer in 0..2^64-1");
+  std::uint64_t value = fallback;
+  if (text) parseWhole(std::string_view(*text), value);
   return value;
 }
 
@@ -107,16 +133,37 @@ bool parseFiniteFloat(std::string_view text, float& value) {
   return parseWhole(text, value) && std::isfinite(value);
 }
 
-void requireFiniteScale(float scale) {
-  if (!std::isfinite(scale)) failSpec("scale " + shortNumber(scale) + " is not finite");
-}
-
 void scaleVelocities(std::span<float> values, float scale) {
   if (scale == 1.0f) return;
-  for (float& v : values) {
-    v *= scale;
-    if (!std::isfinite(v)) failSpec("scale " + shortNumber(scale) + " makes the velocities overflow");
-  }
+  for (float& v : values) v *= scale;
 }
 
 }  // namespace texsynth::flow_detail
+
+namespace texsynth {
+
+void requireFlowScale(float scale) {
+  if (!std::isfinite(scale) || std::abs(scale) > kMaxFlowScale)
+    throw ParameterError("flowScale", "must be a finite number in [-" + flow_detail::shortNumber(kMaxFlowScale) + ", " +
+                                          flow_detail::shortNumber(kMaxFlowScale) + "], got " +
+                                          flow_detail::shortNumber(scale));
+}
+
+void checkFlowSpecification(const std::string& spec) {
+  using namespace flow_detail;
+  const std::string name = spec.substr(0, spec.find(':'));
+  const auto named = [&](std::span<const PresetKeys> presets) {
+    return std::any_of(presets.begin(), presets.end(), [&](const PresetKeys& p) { return p.name == name; });
+  };
+  if (named(surfacePresets())) {
+    FlowSpec::parse(spec, surfacePresets());
+    return;
+  }
+  if (!named(imagePresets()) && !looksLikePath(spec))
+    failSpec("unknown preset '" + name + "' (in 2D: " + joinedNames(imagePresets()) +
+             "; on a mesh: " + joinedNames(surfacePresets()) + ")");
+  const FlowSpec parsed = FlowSpec::parse(spec, imagePresets());  // a file, or "unknown preset"
+  if (parsed.isFile()) FramePattern(parsed.name(), "flow");
+}
+
+}  // namespace texsynth

@@ -12,16 +12,28 @@
 
 namespace texsynth::flow_detail {
 
+// A key a preset accepts and the range of its value (a whole number when `whole`).
+struct PresetKey {
+  std::string_view name;
+  double low, high;
+  bool whole = false;
+};
+
 // A preset's name and the keys it accepts.
 struct PresetKeys {
   std::string_view name;
-  std::initializer_list<std::string_view> keys;
+  std::initializer_list<PresetKey> keys;
 };
+
+// The presets of ImageFlow and SurfaceFlow.
+std::span<const PresetKeys> imagePresets();
+std::span<const PresetKeys> surfacePresets();
 
 class FlowSpec {
  public:
   // A preset when the part before ':' is one of `presets`' names (keys checked against its
-  // list, each at most once); else a file when SPEC looks like a path (it holds '/', '.' or
+  // list, each at most once, each value in its key's range); else a file when SPEC looks like a path (it holds '/', '.'
+  // or
   // '%', or names an existing file); else an unknown preset.
   static FlowSpec parse(const std::string& spec, std::span<const PresetKeys> presets);
 
@@ -29,9 +41,8 @@ class FlowSpec {
   // The preset's name, or the file (pattern) as given.
   const std::string& name() const { return name_; }
 
-  // The value of `key` (a finite float), or `fallback` when SPEC does not set it.
+  // The value of `key` (checked by parse), or `fallback` when SPEC does not set it.
   float number(std::string_view key, float fallback) const;
-  // The value of `key` (an integer in 0 .. 2^64 - 1), or `fallback` when SPEC does not set it.
   std::uint64_t integer(std::string_view key, std::uint64_t fallback) const;
 
   // Throws ParameterError("flow", "NAME: problem").
@@ -39,6 +50,8 @@ class FlowSpec {
 
  private:
   const std::string* find(std::string_view key) const;
+  // Throws unless `text` is a value in `key`'s range.
+  void check(const PresetKey& key, const std::string& text) const;
 
   std::string name_;
   bool file_ = false;
@@ -51,9 +64,8 @@ std::string shortNumber(double value);
 // Parses the whole of `text` (a leading '+' allowed) as a finite float.
 bool parseFiniteFloat(std::string_view text, float& value);
 
-// Throws ParameterError("flow", ...) unless the velocity scale is finite.
-void requireFiniteScale(float scale);
-// Multiplies every value by `scale`; ParameterError("flow", ...) if that overflows a float.
+// Multiplies every value by `scale` (requireFlowScale'd; the values within kMaxFlowSpeed, so
+// nothing overflows).
 void scaleVelocities(std::span<float> values, float scale);
 
 }  // namespace texsynth::flow_detail

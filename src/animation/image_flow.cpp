@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "flow_spec.h"
+#include "texsynth/animation/flow_limits.h"
 #include "texsynth/core/error.h"
 #include "texsynth/core/frame_pattern.h"
 #include "texsynth/core/math.h"
@@ -18,11 +19,16 @@ using flow_detail::FlowSpec;
 using flow_detail::PresetKeys;
 using flow_detail::shortNumber;
 
-const PresetKeys kPresets[] = {{"uniform", {"dx", "dy"}},
-                               {"vortex", {"strength", "cx", "cy", "radius"}},
-                               {"source", {"strength", "cx", "cy", "radius"}},
-                               {"sink", {"strength", "cx", "cy", "radius"}},
-                               {"saddle", {"strength", "cx", "cy", "radius"}}};
+// Speeds in pixels per frame; centre and radius in fractions of the output.
+constexpr flow_detail::PresetKey kSpeed(std::string_view name) {
+  return {name, -kMaxFlowSpeed, kMaxFlowSpeed};
+}
+constexpr flow_detail::PresetKey kCentre[] = {{"cx", 0, 1}, {"cy", 0, 1}, {"radius", 1e-3, 16}};
+const PresetKeys kPresets[] = {{"uniform", {kSpeed("dx"), kSpeed("dy")}},
+                               {"vortex", {kSpeed("strength"), kCentre[0], kCentre[1], kCentre[2]}},
+                               {"source", {kSpeed("strength"), kCentre[0], kCentre[1], kCentre[2]}},
+                               {"sink", {kSpeed("strength"), kCentre[0], kCentre[1], kCentre[2]}},
+                               {"saddle", {kSpeed("strength"), kCentre[0], kCentre[1], kCentre[2]}}};
 
 constexpr std::int64_t kRowsPerChunk = 16;
 
@@ -89,11 +95,14 @@ Image readVelocityImage(const std::string& path, int width, int height) {
     const Vec2f c(image.at(x, y, 0), image.at(x, y, 1));
     return raw ? c : Vec2f(2 * c - Vec2f::Ones());
   });
-  const auto bad = std::find_if(out.pixels.begin(), out.pixels.end(), [](float v) { return !std::isfinite(v); });
+  const auto bad = std::find_if(out.pixels.begin(), out.pixels.end(),
+                                [](float v) { return !(std::abs(v) <= kMaxFlowSpeed); });  // NaN too
   if (bad != out.pixels.end()) {
     const std::size_t pixel = std::size_t(bad - out.pixels.begin()) / 2;
-    throw InputError(path, "has a non-finite velocity at pixel (" + std::to_string(pixel % std::size_t(width)) + ", " +
-                               std::to_string(pixel / std::size_t(width)) + ")");
+    throw InputError(path, "has a velocity of " + shortNumber(*bad) + " at pixel (" +
+                               std::to_string(pixel % std::size_t(width)) + ", " +
+                               std::to_string(pixel / std::size_t(width)) + "); velocities must be finite and within " +
+                               std::to_string(int(kMaxFlowSpeed)) + " pixels per frame");
   }
   return out;
 }
@@ -105,9 +114,13 @@ Image scaled(Image velocities, float scale) {
 
 }  // namespace
 
+std::span<const PresetKeys> flow_detail::imagePresets() {
+  return kPresets;
+}
+
 ImageFlow ImageFlow::parse(const std::string& spec, int width, int height, const ImageFlowOptions& options) {
   TS_CHECK_MSG(width > 0 && height > 0, "an image flow needs a non-empty output");
-  flow_detail::requireFiniteScale(options.scale);
+  requireFlowScale(options.scale);
   const FlowSpec parsed = FlowSpec::parse(spec, kPresets);
   ImageFlow flow;
   flow.width_ = width;
@@ -132,9 +145,6 @@ ImageFlow ImageFlow::parse(const std::string& spec, int width, int height, const
   p.cx = parsed.number("cx", p.cx);
   p.cy = parsed.number("cy", p.cy);
   p.radius = parsed.number("radius", p.radius);
-  for (const auto& [key, value] : {std::pair{"cx", p.cx}, std::pair{"cy", p.cy}})
-    if (value < 0 || value > 1) parsed.fail(std::string(key) + "=" + shortNumber(value) + " is outside [0, 1]");
-  if (!(p.radius > 0)) parsed.fail("radius=" + shortNumber(p.radius) + " must be > 0");
   flow.fixed_ = scaled(centredVelocities(p.name, p.strength, p.cx, p.cy, p.radius, width, height), flow.scale_);
   return flow;
 }

@@ -5,6 +5,7 @@
 
 #include "flow_spec.h"
 #include "surface_flow_fields.h"
+#include "texsynth/animation/flow_limits.h"
 #include "texsynth/core/error.h"
 #include "texsynth/core/frame_pattern.h"
 
@@ -15,8 +16,11 @@ using flow_detail::shortNumber;
 
 namespace {
 
-const flow_detail::PresetKeys kPresets[] = {
-    {"along-field", {"strength"}}, {"downhill", {"strength"}}, {"swirl", {"strength", "seed"}}};
+// Strengths in vertex spacings per frame.
+constexpr flow_detail::PresetKey kStrength = {"strength", -kMaxFlowSpeed, kMaxFlowSpeed};
+const flow_detail::PresetKeys kPresets[] = {{"along-field", {kStrength}},
+                                            {"downhill", {kStrength}},
+                                            {"swirl", {kStrength, {"seed", 0, 18446744073709551615.0, true}}}};
 
 std::vector<Vec3f> scaled(std::vector<Vec3f> velocities, float scale) {
   for (Vec3f& v : velocities) flow_detail::scaleVelocities({v.data(), 3}, scale);
@@ -24,6 +28,10 @@ std::vector<Vec3f> scaled(std::vector<Vec3f> velocities, float scale) {
 }
 
 }  // namespace
+
+std::span<const flow_detail::PresetKeys> flow_detail::surfacePresets() {
+  return kPresets;
+}
 
 struct SurfaceFlow::Impl {
   std::string description;
@@ -50,7 +58,7 @@ SurfaceFlow SurfaceFlow::parse(const std::string& spec, const Mesh& input, const
   TS_CHECK_MSG(target.mesh && target.mesh->normals.size() == target.mesh->vertexCount(),
                "a surface flow needs the synthesis mesh with its vertex normals");
   TS_CHECK_MSG(std::isfinite(target.spacing) && target.spacing > 0, "the vertex spacing must be positive");
-  flow_detail::requireFiniteScale(options.scale);
+  requireFlowScale(options.scale);
   const FlowSpec parsed = FlowSpec::parse(spec, kPresets);
   SurfaceFlow flow;
   Impl& impl = *flow.impl_;

@@ -1,3 +1,4 @@
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -5,6 +6,7 @@
 
 #include "flow_spec.h"
 #include "surface_flow_fields.h"
+#include "texsynth/animation/flow_limits.h"
 #include "texsynth/core/error.h"
 #include "texsynth/geometry/surface_projector.h"
 
@@ -64,8 +66,9 @@ std::vector<Vec3f> readVertexVelocities(const std::string& path, std::size_t ver
       throw InputError(path, where + "expected 3 numbers (vx vy vz), found " + std::to_string(values.size()));
     Vec3f v;
     for (int i = 0; i < 3; ++i)
-      if (!parseFiniteFloat(values[std::size_t(i)], v[i]))
-        throw InputError(path, where + quoted(values[std::size_t(i)]) + " is not a finite number");
+      if (!parseFiniteFloat(values[std::size_t(i)], v[i]) || std::abs(v[i]) > kMaxFlowSpeed)
+        throw InputError(path, where + quoted(values[std::size_t(i)]) + " is not a finite number within " +
+                                   std::to_string(int(kMaxFlowSpeed)) + " world units per frame");
     // Past the vertex count only count, so the message can say how many lines there are.
     if (++lines <= vertexCount) velocities.push_back(v);
   }

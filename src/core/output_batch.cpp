@@ -56,6 +56,7 @@ void OutputBatch::createDirectories(const std::string& directory) {
     if (!fs::create_directory(*it, ec) && !fs::is_directory(*it))
       throw OutputError(directory, "cannot create the directory: " + ec.message());
     createdDirectories_.push_back(it->string());
+    registerDirectory(it->string(), DirectoryCleanup::IfEmpty);  // a signal removes it too
   }
 }
 
@@ -63,8 +64,10 @@ void OutputBatch::discard() {
   for (const Staged& s : staged_) removeTemporary(s.temporary);
   staged_.clear();
   std::error_code ec;
-  for (auto it = createdDirectories_.rbegin(); it != createdDirectories_.rend(); ++it)
+  for (auto it = createdDirectories_.rbegin(); it != createdDirectories_.rend(); ++it) {
     fs::remove(*it, ec);  // only if empty: never anything we did not put there
+    unregisterDirectory(*it);
+  }
   createdDirectories_.clear();
 }
 
@@ -122,6 +125,7 @@ void OutputBatch::commit() {
   for (const Moved& m : moved)
     if (!m.backup.empty()) removeTemporary(m.backup);
   staged_.clear();
+  for (const std::string& directory : createdDirectories_) unregisterDirectory(directory);
   createdDirectories_.clear();
   committed_ = true;
 }

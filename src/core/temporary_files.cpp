@@ -1,5 +1,7 @@
 #include "texsynth/core/temporary_files.h"
 
+#include <dirent.h>
+#include <fcntl.h>
 #include <signal.h>
 #include <unistd.h>
 
@@ -13,6 +15,7 @@
 #include <filesystem>
 #include <mutex>
 #include <set>
+#include <unordered_set>
 
 #include "texsynth/core/error.h"
 
@@ -38,19 +41,153 @@ const std::string& hostTag() {
   return tag;
 }
 
-// The registry a signal handler reads: fixed storage, lock-free, no allocation.
-constexpr int kSlots = 256;
+// The registries a signal handler reads: fixed storage, lock-free reads, no allocation. Writers
+// (ordinary code) serialize on `registryMutex`; a slot's path is complete before it turns Ready.
+constexpr int kSlots = 256, kDirectorySlots = 64;
 constexpr std::size_t kPathBytes = 4096;
 enum SlotState : int { kFree = 0, kBusy = 1, kReady = 2 };
 struct Slot {
   std::atomic<int> state{kFree};
-  char path[kPathBytes];
+  char path[kPathBytes] = {};  // zero: constant-initialized, so the registry costs no start-up work
 };
-std::array<Slot, kSlots> slots;
+constinit std::array<Slot, kSlots> slots;
+
+// A directory to clean: kind 0 holds temporaries (swept for this process's), 1 and 2 are
+// DirectoryCleanup's IfEmpty and WithContents. `uses` counts the temporaries or registrations
+// that keep it; `order` is when it was registered (created directories go deepest, latest, first).
+enum DirectoryKind : int { kHoldsTemporaries = 0, kIfEmpty = 1, kWithContents = 2 };
+struct DirectorySlot : Slot {
+  int kind = 0, uses = 0;
+  std::atomic<unsigned> order{0};
+};
+constinit std::array<DirectorySlot, kDirectorySlots> directorySlots;
+std::mutex registryMutex;
+unsigned registrations = 0;
+
+// "HOST-PID-": what follows the marker in this process's temporaries, filled at registration
+// (again in a forked child) so the handler only compares bytes.
+char ownTag[32] = {};
+
+bool claim(Slot& slot, const std::string& path) {
+  int expected = kFree;
+  if (!slot.state.compare_exchange_strong(expected, kBusy)) return false;
+  std::memcpy(slot.path, path.c_str(), path.size() + 1);
+  slot.state.store(kReady);
+  return true;
+}
+
+void release(Slot& slot) {
+  int expected = kReady;
+  if (slot.state.compare_exchange_strong(expected, kBusy)) slot.state.store(kFree);
+}
+
+// Under registryMutex: one more use of `directory` as `kind`, in a slot of its own if new.
+void retainDirectory(const std::string& directory, int kind) {
+  if (directory.size() >= kPathBytes) return;
+  for (DirectorySlot& slot : directorySlots)
+    if (slot.state.load() == kReady && slot.kind == kind && directory == slot.path) {
+      ++slot.uses;
+      return;
+    }
+  for (DirectorySlot& slot : directorySlots) {
+    if (slot.state.load() != kFree) continue;
+    slot.kind = kind, slot.uses = 1;
+    slot.order.store(++registrations);
+    claim(slot, directory);
+    return;
+  }
+}
+
+// Under registryMutex: one use fewer; the slot is freed with the last.
+void releaseDirectory(const std::string& directory, int kind) {
+  for (DirectorySlot& slot : directorySlots)
+    if (slot.state.load() == kReady && slot.kind == kind && directory == slot.path) {
+      if (--slot.uses == 0) release(slot);
+      return;
+    }
+}
+
+// Under registryMutex: every registered temporary, full paths of any length (what keeps a
+// directory's count exact when a path is unregistered twice or never was).
+std::unordered_set<std::string>& registeredTemporaries() {
+  static std::unordered_set<std::string> paths;
+  return paths;
+}
+
+// Absolute, so the handler finds it whatever the working directory is by then.
+std::string directoryOf(const std::string& path) {
+  std::error_code ec;
+  const fs::path parent = fs::path(path).parent_path();
+  const fs::path absolute = fs::absolute(parent.empty() ? fs::path(".") : parent, ec);
+  return (ec ? parent : absolute.lexically_normal()).string();
+}
+
+// Signal-safe: removes the entries of `directory` that `remove` selects (by name), with
+// getdents64 and unlinkat only. Rereads until a pass removes nothing, since unlinking while
+// reading may skip entries.
+template <class Select>
+void removeEntries(const char* directory, const Select& remove) {
+  const int fd = ::open(directory, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) return;
+  alignas(8) char buffer[8192];
+  for (int pass = 0; pass < 16; ++pass) {
+    bool removed = false;
+    ::lseek(fd, 0, SEEK_SET);
+    for (ssize_t n; (n = ::getdents64(fd, buffer, sizeof buffer)) > 0;)
+      for (ssize_t at = 0; at < n;) {
+        const auto* entry = reinterpret_cast<const struct dirent64*>(buffer + at);
+        at += entry->d_reclen;
+        const char* name = entry->d_name;
+        if (std::strcmp(name, ".") == 0 || std::strcmp(name, "..") == 0 || !remove(name)) continue;
+        if (::unlinkat(fd, name, 0) == 0 || ::unlinkat(fd, name, AT_REMOVEDIR) == 0) removed = true;
+      }
+    if (!removed) break;
+  }
+  ::close(fd);
+}
+
+// Signal-safe: is `name` a temporary of this process?
+bool isOwnTemporary(const char* name) {
+  const char* marker = name[0] == '.' ? std::strstr(name, kMarker.data()) : nullptr;
+  return marker && ownTag[0] && std::strncmp(marker + kMarker.size(), ownTag, std::strlen(ownTag)) == 0;
+}
+
+// Helper processes (a video encoder) that must not outlive us, and so not write any more.
+constexpr int kChildSlots = 8;
+std::array<std::atomic<pid_t>, kChildSlots> children{};
+
+// While a SignalsHeld lives, a signal is only noted here and acted on when it goes.
+std::atomic<bool> holdingSignals{false};
+std::atomic<int> heldSignal{0};
 
 extern "C" void removeTemporariesAndDie(int signal) {
+  if (holdingSignals.load()) {
+    heldSignal.store(signal);
+    return;
+  }
+  for (auto& child : children)
+    if (const pid_t pid = child.load(); pid > 0) ::kill(pid, SIGKILL);
   for (Slot& slot : slots)
     if (slot.state.load() == kReady) ::unlink(slot.path);
+  for (DirectorySlot& slot : directorySlots) {
+    if (slot.state.load() != kReady) continue;
+    if (slot.kind == kHoldsTemporaries) removeEntries(slot.path, isOwnTemporary);
+    if (slot.kind == kWithContents) {
+      removeEntries(slot.path, [](const char*) { return true; });
+      ::rmdir(slot.path);
+    }
+  }
+  // Created output directories, latest (deepest) first; rmdir leaves any that are not empty.
+  for (unsigned below = ~0u;;) {
+    DirectorySlot* latest = nullptr;
+    for (DirectorySlot& slot : directorySlots)
+      if (slot.state.load() == kReady && slot.kind == kIfEmpty && slot.order.load() < below &&
+          (!latest || slot.order.load() > latest->order.load()))
+        latest = &slot;
+    if (!latest) break;
+    ::rmdir(latest->path);
+    below = latest->order.load();
+  }
   ::signal(signal, SIG_DFL);
   ::raise(signal);  // delivered on return: the process dies of the signal, as without us
 }
@@ -88,22 +225,48 @@ bool isTemporaryName(const std::string& fileName) {
 }
 
 void registerTemporary(const std::string& path) {
-  if (path.size() >= kPathBytes) return;  // the next run's stale sweep removes it if it outlives us
-  for (Slot& slot : slots) {
-    int expected = kFree;
-    if (!slot.state.compare_exchange_strong(expected, kBusy)) continue;
-    std::memcpy(slot.path, path.c_str(), path.size() + 1);
-    slot.state.store(kReady);
-    return;
+  std::lock_guard<std::mutex> lock(registryMutex);
+  static long taggedPid = 0;  // a forked child names its temporaries with its own PID
+  if (taggedPid != long(::getpid())) {
+    taggedPid = long(::getpid());
+    std::snprintf(ownTag, sizeof ownTag, "%s-%ld-", hostTag().c_str(), taggedPid);
   }
+  if (!registeredTemporaries().insert(path).second) return;
+  retainDirectory(directoryOf(path), kHoldsTemporaries);
+  if (path.size() >= kPathBytes) return;  // its directory's sweep finds it
+  for (Slot& slot : slots)
+    if (claim(slot, path)) return;
 }
 
 void unregisterTemporary(const std::string& path) {
-  for (Slot& slot : slots) {
-    int expected = kReady;
-    if (slot.state.load() != kReady || path != slot.path) continue;
-    if (slot.state.compare_exchange_strong(expected, kBusy)) slot.state.store(kFree);
-    return;
+  std::lock_guard<std::mutex> lock(registryMutex);
+  if (registeredTemporaries().erase(path) == 0) return;  // never registered, or already gone
+  releaseDirectory(directoryOf(path), kHoldsTemporaries);
+  for (Slot& slot : slots)
+    if (slot.state.load() == kReady && path == slot.path) return release(slot);
+}
+
+void registerDirectory(const std::string& path, DirectoryCleanup cleanup) {
+  std::lock_guard<std::mutex> lock(registryMutex);
+  retainDirectory(path, cleanup == DirectoryCleanup::IfEmpty ? kIfEmpty : kWithContents);
+}
+
+void unregisterDirectory(const std::string& path) {
+  std::lock_guard<std::mutex> lock(registryMutex);
+  for (int kind : {kIfEmpty, kWithContents}) releaseDirectory(path, kind);
+}
+
+void registerChildProcess(int pid) {
+  for (auto& child : children) {
+    pid_t expected = 0;
+    if (child.compare_exchange_strong(expected, pid_t(pid))) return;
+  }
+}
+
+void unregisterChildProcess(int pid) {
+  for (auto& child : children) {
+    pid_t expected = pid_t(pid);
+    if (child.compare_exchange_strong(expected, 0)) return;
   }
 }
 
@@ -145,6 +308,15 @@ int removeStaleTemporaries(const std::string& directory) {
   return removed;
 }
 
+SignalsHeld::SignalsHeld() {
+  holdingSignals.store(true);
+}
+
+SignalsHeld::~SignalsHeld() {
+  holdingSignals.store(false);
+  if (const int signal = heldSignal.exchange(0)) removeTemporariesAndDie(signal);
+}
+
 ScratchDirectory::ScratchDirectory(const std::string& forOutput) {
   std::error_code ec;
   fs::path base = fs::temp_directory_path(ec);
@@ -154,9 +326,11 @@ ScratchDirectory::ScratchDirectory(const std::string& forOutput) {
     throw OutputError(forOutput,
                       "cannot create a scratch directory in '" + base.string() + "': " + std::strerror(errno));
   path_ = pattern;
+  registerDirectory(path_, DirectoryCleanup::WithContents);
 }
 
 ScratchDirectory::~ScratchDirectory() {
+  unregisterDirectory(path_);
   std::error_code ignored;
   fs::remove_all(path_, ignored);
 }

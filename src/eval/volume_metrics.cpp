@@ -30,31 +30,71 @@ Image volumeSlice(const Volume& volume, int axis, int index) {
   return slice;
 }
 
-}  // namespace
+int largestOddAtMost(int n) {
+  return n % 2 ? n : n - 1;
+}
 
-VolumeQuality evaluateVolume(const Image& exemplar, const Volume& volume, const MetricOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
-  eval_detail::validateOptions(options);
+// Checks that need only the volume's size and values, so a patch that fits no slice or a NaN
+// voxel is refused before the exemplar is indexed (for large patches that alone takes seconds).
+void checkVolume(const Volume& volume, const MetricOptions& options) {
   if (volume.empty()) throw ParameterError("volume", "is empty");
-  const int slices = options.slicesPerAxis;
+  const std::string size =
+      std::to_string(volume.nx) + "x" + std::to_string(volume.ny) + "x" + std::to_string(volume.nz);
   for (int axis = 0; axis < 3; ++axis)
-    if (slices > extent(volume, axis))
-      throw ParameterError("slicesPerAxis", std::to_string(slices) + " slices do not fit the volume's " +
+    if (options.slicesPerAxis > extent(volume, axis))
+      throw ParameterError("slicesPerAxis", std::to_string(options.slicesPerAxis) + " slices do not fit the volume's " +
                                                 std::to_string(extent(volume, axis)) + " voxels along " +
                                                 kAxisNames[axis]);
+  // The slices with the shortest side decide; name those.
+  int tightest = 0;
+  auto shortSide = [&](int axis) {
+    return std::min(extent(volume, axis == 0 ? 1 : 0), extent(volume, axis == 2 ? 1 : 2));
+  };
+  for (int axis = 1; axis < 3; ++axis)
+    if (shortSide(axis) < shortSide(tightest)) tightest = axis;
+  if (options.patchSize > shortSide(tightest)) {
+    const int width = extent(volume, tightest == 0 ? 1 : 0), height = extent(volume, tightest == 2 ? 1 : 2);
+    throw ParameterError("patchSize", std::to_string(options.patchSize) + " is larger than the " +
+                                          std::to_string(width) + "x" + std::to_string(height) + " slices normal to " +
+                                          kAxisNames[tightest] + " of the " + size + " volume (at most " +
+                                          std::to_string(largestOddAtMost(shortSide(tightest))) + " fits every slice)");
+  }
+  for (std::size_t i = 0; i < volume.voxels.size(); ++i)
+    if (!std::isfinite(volume.voxels[i])) {
+      const std::size_t voxel = i / std::size_t(volume.channels);
+      throw ParameterError("volume", "voxel (" + std::to_string(voxel % volume.nx) + ", " +
+                                         std::to_string(voxel / volume.nx % volume.ny) + ", " +
+                                         std::to_string(voxel / (std::size_t(volume.nx) * volume.ny)) +
+                                         ") holds a non-finite value (NaN or infinity)");
+    }
+}
+
+}  // namespace
+
+VolumeQuality evaluateVolume(const Image& exemplar, const Volume& volume, const MetricOptions& options,
+                             Progress& progress) {
+  const auto start = std::chrono::steady_clock::now();
+  eval_detail::validateOptions(options);
+  checkVolume(volume, options);
+  const int slices = options.slicesPerAxis;
   const Image exemplarRgb = eval_detail::toRgb255(exemplar, "exemplar", options.patchSize);
+  progress.begin("indexing exemplar patches", 1);
   const PatchIndex exemplarIndex(exemplarRgb, options.patchSize);
+  progress.advance();
+  progress.end();
 
   VolumeQuality quality;
+  progress.begin("evaluating slices", 3 * std::int64_t(slices));
   for (int axis = 0; axis < 3; ++axis) {
     const auto axisStart = std::chrono::steady_clock::now();
     const int n = extent(volume, axis);
     double coherenceSquares = 0, completenessSquares = 0, histogram = 0, periodicity = 0, lattice = 0, sharpness = 0;
     for (int i = 0; i < slices; ++i) {
       const int index = int(std::floor((i + 0.5) * n / slices));
-      const std::string what = std::string("volume slice ") + kAxisNames[axis] + "=" + std::to_string(index);
-      Image slice = eval_detail::toRgb255(volumeSlice(volume, axis, index), what, options.patchSize);
+      // checkVolume made every slice fit the patch and hold finite values.
+      Image slice = eval_detail::toRgb255(volumeSlice(volume, axis, index), "volume", options.patchSize);
       QualityMetrics m = eval_detail::evaluateRgb255(exemplarIndex, slice, options);
+      progress.advance();
       coherenceSquares += m.coherence * m.coherence;
       completenessSquares += m.completeness * m.completeness;
       histogram += m.histogram;
@@ -71,6 +111,7 @@ VolumeQuality evaluateVolume(const Image& exemplar, const Volume& volume, const 
     a.lattice = lattice / slices;
     a.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - axisStart).count();
   }
+  progress.end();
   QualityMetrics& mean = quality.mean;
   for (const QualityMetrics& a : quality.axis) {
     mean.coherence += a.coherence / 3;

@@ -33,6 +33,11 @@ void findParents(MeshLevel& level, const Mesh& coarser) {
 
 }  // namespace
 
+int minimumFinestVertices(int levels, float ratio) {
+  // lround(vertices / ratio^(levels - 1)) >= 32 once that quotient reaches 31.5.
+  return int(std::ceil((kMinimumLevelVertices - 0.5) * std::pow(double(ratio), levels - 1)));
+}
+
 std::vector<int> meshLevelVertexCounts(const MeshHierarchyOptions& options) {
   if (options.vertices < 1 || options.vertices > 50'000'000)
     throw ParameterError("vertices", "must be in [1, 50000000], got " + std::to_string(options.vertices));
@@ -44,7 +49,7 @@ std::vector<int> meshLevelVertexCounts(const MeshHierarchyOptions& options) {
   for (int l = 0; l < options.levels; ++l)
     counts[std::size_t(l)] =
         int(std::lround(double(options.vertices) / std::pow(double(options.ratio), options.levels - 1 - l)));
-  if (counts[0] < kMinimumLevelVertices)
+  if (options.vertices < minimumFinestVertices(options.levels, options.ratio))
     throw ParameterError("levels", "the coarsest of " + std::to_string(options.levels) + " levels would get " +
                                        std::to_string(counts[0]) +
                                        " vertices (vertices / ratio^(levels - 1)); at least " +

@@ -40,9 +40,9 @@ GradientExemplars::GradientExemplars(const std::vector<Image>& planes, const std
     : impl_(std::make_unique<Impl>()) {
   checkOptions(options);
   if (planes.size() != 1 && planes.size() != 3)
-    throw ParameterError("exemplars", "give one exemplar for all planes, or three: XY YZ ZX");
+    throw ParameterError("exemplarCount", "give one exemplar for all planes, or three: XY YZ ZX");
   if (masks.size() > 1 && masks.size() != planes.size())
-    throw ParameterError("masks", "give one mask for all planes, or one per exemplar (XY YZ ZX)");
+    throw ParameterError("maskCount", "give one mask for all planes, or one per exemplar (XY YZ ZX)");
   std::vector<Image> colors;
   for (const Image& plane : planes) {
     if (plane.empty()) throw ParameterError("exemplars", "an exemplar is empty");

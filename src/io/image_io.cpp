@@ -3,13 +3,13 @@
 #include "texsynth/io/image_io.h"
 
 #include <cstring>
-#include <filesystem>
 #include <optional>
 
 #include "image_codecs.h"
 #include "texsynth/core/atomic_file.h"
 #include "texsynth/core/error.h"
 #include "texsynth/core/parallel.h"
+#include "texsynth/io/readable_file.h"
 
 namespace texsynth {
 namespace image_codec {
@@ -132,8 +132,7 @@ std::optional<Format> formatFromSignature(const std::string& bytes) {
 
 // Reads the file and decides its format; every failure is an InputError naming the file.
 Format loadForReading(const std::string& path, std::string& bytes) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError(path, "file does not exist");
+  requireReadableFile(path);  // a directory is that, not an unsupported format
   auto expected = formatFromExtension(fileExtension(path));
   if (!expected)
     throw InputError(path, "unsupported image format '." + fileExtension(path) + "' (readable: " + kSupported + ")");

@@ -197,7 +197,10 @@ Mesh parseGltf(std::string_view bytes, const std::string& source) {
           : loader.LoadASCIIFromString(&model, &error, &warning, bytes.data(),
                                        unsigned(std::min<std::size_t>(bytes.size(), 0xffffffffu)), directory);
   if (!loaded) {
-    const std::string first = error.substr(0, error.find('\n'));
+    std::string first = error.substr(0, error.find('\n'));
+    // tinygltf passes on nlohmann's messages: the reason, without the library's tag.
+    if (const std::size_t tag = first.find("[json.exception."); tag != std::string::npos)
+      first.erase(tag, first.find("] ", tag) + 2 - tag);
     throw InputError(source, "is not a readable glTF file" + (first.empty() ? std::string() : ": " + first));
   }
 

@@ -4,6 +4,7 @@
 
 #include "texsynth/core/atomic_file.h"
 #include "texsynth/core/error.h"
+#include "texsynth/io/readable_file.h"
 
 namespace texsynth {
 namespace {
@@ -14,6 +15,7 @@ constexpr std::size_t kMaxMeshFileBytes = std::size_t(2) << 30;
 }  // namespace
 
 Mesh readMesh(const std::string& path) {
+  requireReadableFile(path);  // a missing file or a directory is that, not an unsupported format
   const std::string extension = fileExtension(path);
   Mesh (*parse)(std::string_view, const std::string&) = nullptr;
   if (extension == "obj")

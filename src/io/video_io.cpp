@@ -112,11 +112,16 @@ std::string runProgram(const std::string& program, const std::vector<std::string
   const int spawnError = posix_spawn(&pid, program.c_str(), &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
   if (spawnError != 0) return "cannot run '" + program + "': " + std::strerror(spawnError);
+  registerChildProcess(pid);  // a signal that ends us ends the encoder too
 
   int status = 0;
   while (::waitpid(pid, &status, 0) < 0) {
-    if (errno != EINTR) return std::string("cannot wait for ffmpeg: ") + std::strerror(errno);
+    if (errno != EINTR) {
+      unregisterChildProcess(pid);
+      return std::string("cannot wait for ffmpeg: ") + std::strerror(errno);
+    }
   }
+  unregisterChildProcess(pid);
   if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return "";
   if (WIFSIGNALED(status)) return "ffmpeg was killed by signal " + std::to_string(WTERMSIG(status));
   return "ffmpeg failed with exit status " + std::to_string(WEXITSTATUS(status));

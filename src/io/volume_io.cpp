@@ -1,24 +1,26 @@
 // Volume file dispatch by extension, plus the checks every volume writer shares.
 #include "texsynth/io/volume_io.h"
 
-#include <filesystem>
-
 #include "texsynth/core/atomic_file.h"
 #include "texsynth/core/error.h"
+#include "texsynth/io/color_values.h"
+#include "texsynth/io/readable_file.h"
 #include "volume_codecs.h"
 
 namespace texsynth {
 
 Volume readVolume(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError(path, "file does not exist");
+  requireReadableFile(path);  // a directory is that, not an unsupported format
   std::string ext = fileExtension(path);
   if (ext != "nrrd" && ext != "vdb")
     throw InputError(path, "unsupported volume format '." + ext + "' (readable: .nrrd .vdb)");
   std::string bytes = readFileBytes(path);
   if (bytes.empty()) throw InputError(path, "file is empty");
-  if (ext == "vdb") return volume_codec::decodeVdb(path, std::move(bytes));
-  return volume_codec::decodeNrrd(path, bytes);
+  Volume volume =
+      ext == "vdb" ? volume_codec::decodeVdb(path, std::move(bytes)) : volume_codec::decodeNrrd(path, bytes);
+  // Float samples come as stored: refuse what no colour (or mask) value can be.
+  checkColorValues(path, volume);
+  return volume;
 }
 
 void writeVolume(const std::string& path, const Volume& volume, const VolumeWriteOptions& options) {
@@ -31,9 +33,10 @@ void writeVolume(const std::string& path, const Volume& volume, const VolumeWrit
     throw ParameterError("volume", "voxel buffer size does not match " + std::to_string(volume.nx) + "x" +
                                        std::to_string(volume.ny) + "x" + std::to_string(volume.nz));
   if (ext == "nrrd")
-    writeAtomically(path, [&](const std::string& temp) { volume_codec::writeNrrd(temp, path, volume, options); });
+    writeAtomically(
+        path, [&](const std::string& temp) { volume_codec::writeNrrd(temp, path, volume, options); }, options.staging);
   else
-    writeFileAtomically(path, volume_codec::encodeVdb(path, volume));
+    writeFileAtomically(path, volume_codec::encodeVdb(path, volume), options.staging);
 }
 
 }  // namespace texsynth

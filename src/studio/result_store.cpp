@@ -6,8 +6,12 @@ namespace texsynth::studio {
 std::string ResultStore::put(std::string contentType, std::string bytes) {
   std::lock_guard<std::mutex> lock(mutex_);
   std::string id = "result-" + std::to_string(++nextId_);
+  bytes_ += bytes.size();
   results_.push_back({id, {std::move(contentType), std::move(bytes)}});
-  while (results_.size() > keep_) results_.pop_front();
+  while (results_.size() > keep_ || (bytes_ > maxBytes_ && results_.size() > 1)) {
+    bytes_ -= results_.front().second.bytes.size();
+    results_.pop_front();
+  }
   return id;
 }
 
@@ -20,9 +24,7 @@ std::optional<StoredResult> ResultStore::get(const std::string& id) const {
 
 std::size_t ResultStore::bytes() const {
   std::lock_guard<std::mutex> lock(mutex_);
-  std::size_t total = 0;
-  for (const auto& entry : results_) total += entry.second.bytes.size();
-  return total;
+  return bytes_;
 }
 
 }  // namespace texsynth::studio

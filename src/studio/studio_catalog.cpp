@@ -11,6 +11,7 @@
 #include "texsynth/io/image_io.h"
 #include "texsynth/io/mesh_io.h"
 #include "texsynth/studio/http_error.h"
+#include "texsynth/studio/texturable_mesh.h"
 
 namespace texsynth::studio {
 
@@ -46,7 +47,7 @@ std::string displayName(const std::string& name, const std::string& fallback) {
 
 void validateFile(const std::string& path, bool mesh, int maxSide) {
   if (mesh) {
-    readMesh(path);
+    requireTexturableMesh(readMesh(path), path);
     return;
   }
   const Image image = readImage(path);
@@ -57,16 +58,28 @@ void validateFile(const std::string& path, bool mesh, int maxSide) {
 
 }  // namespace
 
-StudioCatalog::StudioCatalog(const UploadLimits& limits) : limits_(limits) {
+// An upload's file in the scratch folder, which it keeps while it exists.
+struct UploadFile {
+  std::shared_ptr<ScratchDirectory> folder;
+  std::string path;
+  std::size_t bytes = 0;
+  ~UploadFile() {
+    std::error_code ignored;
+    fs::remove(path, ignored);
+  }
+};
+
+StudioCatalog::StudioCatalog(const UploadLimits& limits, Forgotten forgotten)
+    : limits_(limits), forgotten_(std::move(forgotten)) {
   int n = 0;
   for (const fs::path& file : listFiles(cgalMeshDirectory(), {"off"}))
-    meshes_.push_back({"mesh-" + std::to_string(++n), file.stem().string(), "CGAL", file.string()});
+    meshes_.push_back({"mesh-" + std::to_string(++n), file.stem().string(), "CGAL", file.string(), nullptr});
   n = 0;
   const std::string patterns = gimpPatternDirectory();
   for (const fs::path& file : listFiles(patterns, {"pat"})) {
     const std::string category = file.parent_path().filename().string();
     exemplars_.push_back(
-        {"exemplar-" + std::to_string(++n), category + "/" + file.stem().string(), category, file.string()});
+        {"exemplar-" + std::to_string(++n), category + "/" + file.stem().string(), category, file.string(), nullptr});
   }
 }
 
@@ -80,18 +93,54 @@ std::vector<CatalogEntry> StudioCatalog::exemplars() const {
   return exemplars_;
 }
 
+const CatalogEntry& StudioCatalog::use(const std::vector<CatalogEntry>& entries, const std::string& id,
+                                       const char* kind) const {
+  for (const CatalogEntry& entry : entries)
+    if (entry.id == id) {
+      if (entry.file) lastUse_[id] = ++clock_;
+      return entry;
+    }
+  throw notFound(std::string(kind) + " '" + id + "'");
+}
+
 CatalogEntry StudioCatalog::mesh(const std::string& id) const {
   std::lock_guard<std::mutex> lock(mutex_);
-  for (const CatalogEntry& entry : meshes_)
-    if (entry.id == id) return entry;
-  throw notFound("mesh '" + id + "'");
+  return use(meshes_, id, "mesh");
 }
 
 CatalogEntry StudioCatalog::exemplar(const std::string& id) const {
   std::lock_guard<std::mutex> lock(mutex_);
-  for (const CatalogEntry& entry : exemplars_)
-    if (entry.id == id) return entry;
-  throw notFound("exemplar '" + id + "'");
+  return use(exemplars_, id, "exemplar");
+}
+
+void StudioCatalog::keepInUse(std::set<std::string> ids) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  inUse_ = std::move(ids);
+}
+
+UploadUsage StudioCatalog::uploadUsage() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  UploadUsage usage;
+  for (const auto* entries : {&meshes_, &exemplars_})
+    for (const CatalogEntry& entry : *entries)
+      if (entry.file) ++usage.count, usage.bytes += entry.file->bytes;
+  return usage;
+}
+
+std::vector<std::string> StudioCatalog::forgetBeyondLimit(std::vector<CatalogEntry>& entries) {
+  std::vector<std::pair<std::uint64_t, std::string>> uploads;  // (last use, id), not in use
+  for (const CatalogEntry& entry : entries)
+    if (entry.file && !inUse_.count(entry.id)) uploads.push_back({lastUse_[entry.id], entry.id});
+  std::vector<std::string> forgotten;
+  if (uploads.size() <= std::size_t(limits_.keptUploads)) return forgotten;
+  std::sort(uploads.begin(), uploads.end());
+  for (std::size_t i = 0; i + std::size_t(limits_.keptUploads) < uploads.size(); ++i)
+    forgotten.push_back(uploads[i].second);
+  std::erase_if(entries, [&](const CatalogEntry& entry) {
+    return std::find(forgotten.begin(), forgotten.end(), entry.id) != forgotten.end();
+  });
+  for (const std::string& id : forgotten) lastUse_.erase(id);
+  return forgotten;
 }
 
 std::optional<CatalogEntry> StudioCatalog::findByName(const std::string& name, bool mesh) const {
@@ -107,7 +156,7 @@ CatalogEntry StudioCatalog::addLocal(const std::string& path, bool mesh) {
   std::lock_guard<std::mutex> lock(mutex_);
   auto& entries = mesh ? meshes_ : exemplars_;
   CatalogEntry entry{(mesh ? "local-mesh-" : "local-exemplar-") + std::to_string(entries.size() + 1),
-                     fs::path(path).stem().string(), "command line", path};
+                     fs::path(path).stem().string(), "command line", path, nullptr};
   entries.push_back(entry);
   return entry;
 }
@@ -135,14 +184,17 @@ CatalogEntry StudioCatalog::upload(std::string_view bytes, const std::string& fo
     throw HttpError(413, std::string(mesh ? "mesh" : "exemplar") + " upload of " + std::to_string(bytes.size()) +
                              " bytes; at most " + std::to_string(limit));
   if (bytes.empty()) throw HttpError(400, "the upload is empty");
-  std::string path;
+  std::shared_ptr<UploadFile> file = std::make_shared<UploadFile>();
   int number;
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (!uploads_) uploads_ = std::make_unique<ScratchDirectory>("studio uploads");
+    if (!uploads_) uploads_ = std::make_shared<ScratchDirectory>("studio uploads");
     number = ++uploadCount_;
-    path = (fs::path(uploads_->path()) / ("upload-" + std::to_string(number) + "." + ext)).string();
+    file->folder = uploads_;
+    file->path = (fs::path(uploads_->path()) / ("upload-" + std::to_string(number) + "." + ext)).string();
+    file->bytes = bytes.size();
   }
+  const std::string& path = file->path;
   {
     std::ofstream out(path, std::ios::binary);
     out.write(bytes.data(), std::streamsize(bytes.size()));
@@ -152,21 +204,23 @@ CatalogEntry StudioCatalog::upload(std::string_view bytes, const std::string& fo
   try {
     validateFile(path, mesh, limits_.exemplarSide);
   } catch (const Error& e) {
-    std::error_code ignored;
-    fs::remove(path, ignored);
     // The loaders name the file by its generated path: the user knows it by the upload's name.
     std::string message = e.what();
     for (std::size_t at; (at = message.find(path)) != std::string::npos;) message.replace(at, path.size(), shown);
     throw HttpError(400, message);
-  } catch (...) {
-    std::error_code ignored;
-    fs::remove(path, ignored);
-    throw;
   }
-  std::lock_guard<std::mutex> lock(mutex_);
   CatalogEntry entry{std::string(mesh ? "upload-mesh-" : "upload-exemplar-") + std::to_string(number), shown, "uploads",
-                     path};
-  (mesh ? meshes_ : exemplars_).push_back(entry);
+                     path, std::move(file)};
+  std::vector<std::string> forgotten;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    auto& entries = mesh ? meshes_ : exemplars_;
+    entries.push_back(entry);
+    lastUse_[entry.id] = ++clock_;
+    forgotten = forgetBeyondLimit(entries);
+  }
+  if (forgotten_)
+    for (const std::string& id : forgotten) forgotten_(id);
   return entry;
 }
 

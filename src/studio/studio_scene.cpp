@@ -9,6 +9,7 @@
 #include "texsynth/core/error.h"
 #include "texsynth/geometry/mesh_subdivision.h"
 #include "texsynth/studio/http_error.h"
+#include "texsynth/studio/texturable_mesh.h"
 
 namespace texsynth::studio {
 
@@ -30,7 +31,7 @@ StudioScene::StudioScene(std::string meshId, std::string meshName, Mesh mesh, st
                          const FieldDesignOptions& fieldOptions)
     : meshId_(std::move(meshId)), meshName_(std::move(meshName)), mesh_(std::move(mesh)), fieldOptions_(fieldOptions) {
   mesh_.validate(meshName_);
-  if (mesh_.triangles.empty()) throw InputError(meshName_, "the mesh has no triangles");
+  requireTexturableMesh(mesh_, meshName_);
   if (mesh_.normals.empty()) mesh_.computeNormals();
   mesh_.colors.clear();
   mesh_.attributes.clear();

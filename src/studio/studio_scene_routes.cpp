@@ -46,8 +46,9 @@ std::string queryValue(const httplib::Request& request, const std::string& key, 
   return request.has_param(key) ? request.get_param_value(key) : fallback;
 }
 
-void upload(httplib::Server& server, StudioState& state, const std::string& route, bool mesh) {
-  server.Post(route, [&state, mesh](const httplib::Request& request, httplib::Response& response) {
+void upload(StudioRouter& router, StudioState& state, const std::string& route, bool mesh) {
+  const std::size_t limit = mesh ? state.options.limits.meshBytes : state.options.limits.exemplarBytes;
+  router.post(route, limit, [&state, mesh](const httplib::Request& request, httplib::Response& response) {
     answer(response, [&] {
       if (!request.has_param("format")) throw HttpError(400, "give the file type: ?format=EXT");
       const std::string format = request.get_param_value("format"), name = queryValue(request, "name");
@@ -60,17 +61,18 @@ void upload(httplib::Server& server, StudioState& state, const std::string& rout
 
 }  // namespace
 
-void addSceneRoutes(httplib::Server& server, StudioState& state) {
-  server.Get("/api/catalog", [&state](const httplib::Request&, httplib::Response& response) {
+void addSceneRoutes(StudioRouter& router, StudioState& state) {
+  const std::size_t json = state.options.limits.jsonBytes;
+  router.get("/api/catalog", [&state](const httplib::Request&, httplib::Response& response) {
     nlohmann::json meshes = nlohmann::json::array(), exemplars = nlohmann::json::array();
     for (const CatalogEntry& e : state.catalog.meshes()) meshes.push_back(entryJson(e));
     for (const CatalogEntry& e : state.catalog.exemplars()) exemplars.push_back(entryJson(e));
     sendJson(response, {{"meshes", meshes}, {"exemplars", exemplars}});
   });
-  upload(server, state, "/api/uploads/mesh", true);
-  upload(server, state, "/api/uploads/exemplar", false);
+  upload(router, state, "/api/uploads/mesh", true);
+  upload(router, state, "/api/uploads/exemplar", false);
 
-  server.Get(R"(/api/exemplars/([A-Za-z0-9-]+)/image)",
+  router.get(R"(/api/exemplars/([A-Za-z0-9-]+)/image)",
              [&state](const httplib::Request& request, httplib::Response& response) {
                answer(response, [&] {
                  const CatalogEntry entry = state.catalog.exemplar(request.matches[1]);
@@ -78,14 +80,15 @@ void addSceneRoutes(httplib::Server& server, StudioState& state) {
                });
              });
 
-  server.Get("/api/scene", [&state](const httplib::Request&, httplib::Response& response) {
+  router.get("/api/scene", [&state](const httplib::Request&, httplib::Response& response) {
     std::lock_guard<std::mutex> lock(state.mutex);
     sendJson(response, sceneJson(state));
   });
-  server.Post("/api/scene", [&state](const httplib::Request& request, httplib::Response& response) {
+  router.post("/api/scene", json, [&state](const httplib::Request& request, httplib::Response& response) {
     answer(response, [&] {
       const nlohmann::json body = jsonBody(request);
-      if (!body.is_object()) throw HttpError(400, "give {\"mesh\": ID} and/or {\"exemplar\": ID}");
+      if (!body.is_object() || (!body.contains("mesh") && !body.contains("exemplar")))
+        throw HttpError(400, "give {\"mesh\": ID} and/or {\"exemplar\": ID}");
       for (const auto& [key, value] : body.items())
         if ((key != "mesh" && key != "exemplar") || !value.is_string())
           throw HttpError(400, "'" + key + "': give {\"mesh\": ID} and/or {\"exemplar\": ID} (ids are strings)");
@@ -95,16 +98,17 @@ void addSceneRoutes(httplib::Server& server, StudioState& state) {
         scene =
             std::make_shared<StudioScene>(entry.id, entry.name, readMesh(entry.path), state.options.displayVertices);
       }
-      if (body.contains("exemplar")) state.catalog.exemplar(body["exemplar"].get<std::string>());  // 404 if unknown
       std::lock_guard<std::mutex> lock(state.mutex);
+      if (body.contains("exemplar")) state.catalog.exemplar(body["exemplar"].get<std::string>());  // 404 if unknown
       if (scene) state.scene = scene, ++state.sceneSerial;
       if (body.contains("exemplar")) state.texture.exemplarId = body["exemplar"].get<std::string>();
+      state.keepSceneInUse();
       const nlohmann::json now = sceneJson(state);
       state.events.publish("scene", now);
       sendJson(response, now);
     });
   });
-  server.Get("/api/mesh.glb", [&state](const httplib::Request&, httplib::Response& response) {
+  router.get("/api/mesh.glb", [&state](const httplib::Request&, httplib::Response& response) {
     answer(response, [&] {
       std::shared_ptr<StudioScene> scene;
       {
@@ -115,13 +119,13 @@ void addSceneRoutes(httplib::Server& server, StudioState& state) {
     });
   });
 
-  server.Get("/api/sketch", [&state](const httplib::Request&, httplib::Response& response) {
+  router.get("/api/sketch", [&state](const httplib::Request&, httplib::Response& response) {
     answer(response, [&] {
       std::lock_guard<std::mutex> lock(state.mutex);
       response.set_content(encodeSketch(state.requireScene()->sketch()), "application/json");
     });
   });
-  server.Put("/api/sketch", [&state](const httplib::Request& request, httplib::Response& response) {
+  router.put("/api/sketch", json, [&state](const httplib::Request& request, httplib::Response& response) {
     answer(response, [&] {
       const Sketch sketch = parseSketch(request.body, "sketch");
       std::lock_guard<std::mutex> lock(state.mutex);
@@ -134,7 +138,7 @@ void addSceneRoutes(httplib::Server& server, StudioState& state) {
       sendJson(response, body);
     });
   });
-  server.Post("/api/sketch/curves", [&state](const httplib::Request& request, httplib::Response& response) {
+  router.post("/api/sketch/curves", json, [&state](const httplib::Request& request, httplib::Response& response) {
     answer(response, [&] {
       const SketchCurve curve = parseCurve(jsonBody(request));
       const auto started = std::chrono::steady_clock::now();
@@ -154,8 +158,8 @@ void addSceneRoutes(httplib::Server& server, StudioState& state) {
       sendJson(response, body, 201);
     });
   });
-  server.Delete(R"(/api/sketch/curves/([A-Za-z0-9-]+))", [&state](const httplib::Request& request,
-                                                                  httplib::Response& response) {
+  router.del(R"(/api/sketch/curves/([A-Za-z0-9-]+))", [&state](const httplib::Request& request,
+                                                               httplib::Response& response) {
     answer(response, [&] {
       std::lock_guard<std::mutex> lock(state.mutex);
       StudioScene& scene = *state.requireScene();
@@ -165,7 +169,7 @@ void addSceneRoutes(httplib::Server& server, StudioState& state) {
       sendJson(response, body);
     });
   });
-  server.Get("/api/field/glyphs", [&state](const httplib::Request& request, httplib::Response& response) {
+  router.get("/api/field/glyphs", [&state](const httplib::Request& request, httplib::Response& response) {
     answer(response, [&] {
       int across = 14;
       if (request.has_param("across")) {

@@ -1,5 +1,5 @@
 // The studio's HTTP plumbing: the page's static files from an allow-list, the event stream,
-// error answers, and the server's life cycle.
+// error answers, and the server's life cycle. Routing by path and method is studio_router.cpp's.
 #include "texsynth/studio/studio_server.h"
 
 #include <sys/socket.h>
@@ -10,7 +10,9 @@
 #include "studio_state.h"
 #include "texsynth/core/atomic_file.h"
 #include "texsynth/core/error.h"
+#include "texsynth/io/json_input.h"
 #include "texsynth/io/mesh_io.h"
+#include "texsynth/studio/public_message.h"
 
 namespace texsynth::studio {
 
@@ -26,10 +28,15 @@ const std::map<std::string, std::string> kContentTypes = {{".html", "text/html; 
 
 // Every file the page may load, by URL path, found once at start: the web folder's own files and
 // the npm packages' modules. A request's path is only ever looked up here, never joined to a folder.
+// InputError for a folder given that does not hold the page.
 std::map<std::string, fs::path> webAssets(const std::string& webRoot) {
   std::map<std::string, fs::path> assets;
   if (webRoot.empty()) return assets;
   std::error_code error;
+  if (!fs::is_directory(webRoot, error))
+    throw InputError(webRoot, "no such folder; give the folder with the studio's page (index.html), e.g. web/");
+  if (!fs::is_regular_file(fs::path(webRoot) / "index.html", error))
+    throw InputError(webRoot, "holds no index.html: not the folder with the studio's page (e.g. web/)");
   for (const auto& entry : fs::directory_iterator(webRoot, error))
     if (entry.is_regular_file() && kContentTypes.count(entry.path().extension().string()))
       assets[std::string("/").append(entry.path().filename().string())] = entry.path();  // (gcc 12: not "/" + s)
@@ -56,14 +63,26 @@ class HttpServer : public httplib::Server {
   void widenBacklog() { ::listen(svr_sock_, SOMAXCONN); }
 };
 
+// nlohmann's "[json.exception.type_error.302] type must be number, but is null" -> "type must be ...".
+std::string withoutLibraryTag(std::string message) {
+  if (message.rfind("[json.exception.", 0) == 0) message.erase(0, message.find("] ") + 2);
+  return message;
+}
+
 }  // namespace
 
 StudioState::StudioState(const StudioOptions& options)
-    : options(options), catalog(options.limits), jobs(std::make_unique<JobLanes>(options.workers, events)) {}
+    : options(options),
+      catalog(options.limits, [this](const std::string& id) { solids.forgetExemplar(id); }),
+      jobs(std::make_unique<JobLanes>(options.workers, events)) {}
 
 std::shared_ptr<StudioScene> StudioState::requireScene() const {
   if (!scene) throw HttpError(409, "no mesh chosen yet: POST /api/scene {\"mesh\": ID} first");
   return scene;
+}
+
+void StudioState::keepSceneInUse() {
+  catalog.keepInUse({scene ? scene->meshId() : "", texture.exemplarId});
 }
 
 void sendJson(httplib::Response& response, const nlohmann::json& body, int status) {
@@ -72,32 +91,34 @@ void sendJson(httplib::Response& response, const nlohmann::json& body, int statu
 }
 
 void answer(httplib::Response& response, const std::function<void()>& handle) {
+  const auto fail = [&response](const std::string& message, int status) {
+    sendJson(response, {{"error", withoutTemporaryPaths(message)}}, status);
+  };
   try {
     handle();
   } catch (const HttpError& e) {
-    sendJson(response, {{"error", e.what()}}, e.status());
+    fail(e.what(), e.status());
   } catch (const InputError& e) {
-    sendJson(response, {{"error", e.what()}}, 400);
+    fail(e.what(), 400);
   } catch (const ParameterError& e) {
-    sendJson(response, {{"error", e.what()}}, 400);
+    fail(e.what(), 400);
+  } catch (const nlohmann::json::exception& e) {  // a value of a type the route did not check
+    fail("request body: " + withoutLibraryTag(e.what()), 400);
   } catch (const std::exception& e) {
-    sendJson(response, {{"error", std::string("internal error: ") + e.what()}}, 500);
+    fail(std::string("internal error: ") + e.what(), 500);
   }
 }
 
 nlohmann::json jsonBody(const httplib::Request& request) {
   if (request.body.empty()) return nlohmann::json::object();
-  try {
-    return nlohmann::json::parse(request.body);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw HttpError(400, std::string("malformed JSON: ") + e.what());
-  }
+  return json_input::parse(request.body, "request body");
 }
 
 struct StudioServer::Impl {
   explicit Impl(StudioOptions options) : state(options), assets(webAssets(options.webRoot)) {}
   StudioState state;
   std::map<std::string, fs::path> assets;
+  StudioRouter router;
   HttpServer http;
   std::thread listener;
   int port = 0;
@@ -106,6 +127,7 @@ struct StudioServer::Impl {
 StudioServer::StudioServer(StudioOptions options) : impl_(std::make_unique<Impl>(std::move(options))) {
   StudioState& state = impl_->state;
   httplib::Server& http = impl_->http;
+  StudioRouter& router = impl_->router;
   // Room for the event streams of many pages and a load test's clients at once.
   http.new_task_queue = [] { return new httplib::ThreadPool(64); };
   // Pages and clients keep their connection (a browser opens a few per host): far fewer new
@@ -120,7 +142,9 @@ StudioServer::StudioServer(StudioOptions options) : impl_(std::make_unique<Impl>
     const int yes = 1;
     setsockopt(socket, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
   });
-  http.set_payload_max_length(std::max(state.options.limits.meshBytes, state.options.limits.exemplarBytes) + 1024);
+  // The largest body any route takes; each route reads its own up to its own limit (studio_router.h).
+  const UploadLimits& limits = state.options.limits;
+  http.set_payload_max_length(std::max({limits.meshBytes, limits.exemplarBytes, limits.jsonBytes}));
   http.set_exception_handler([](const httplib::Request&, httplib::Response& response, std::exception_ptr) {
     sendJson(response, {{"error", "internal error"}}, 500);
   });
@@ -132,15 +156,18 @@ StudioServer::StudioServer(StudioOptions options) : impl_(std::make_unique<Impl>
     sendJson(response, {{"error", what}}, response.status);
   });
 
-  http.Get("/api/health", [&state](const httplib::Request&, httplib::Response& response) {
+  router.get("/api/health", [&state](const httplib::Request&, httplib::Response& response) {
+    const UploadUsage uploads = state.catalog.uploadUsage();
     std::lock_guard<std::mutex> lock(state.mutex);
     sendJson(response, {{"status", "ok"},
                         {"version", "texsynth studio 1"},
                         {"mesh", state.scene ? state.scene->meshId() : ""},
                         {"exemplar", state.texture.exemplarId},
-                        {"results_mib", double(state.results.bytes()) / (1 << 20)}});
+                        {"results_mib", double(state.results.bytes()) / (1 << 20)},
+                        {"uploads", uploads.count},
+                        {"uploads_mib", double(uploads.bytes) / (1 << 20)}});
   });
-  http.Get("/api/events", [&state](const httplib::Request& request, httplib::Response& response) {
+  router.get("/api/events", [&state](const httplib::Request& request, httplib::Response& response) {
     std::int64_t after = state.events.lastId();  // a new page starts from now
     if (request.has_header("Last-Event-ID")) {
       try {
@@ -165,13 +192,10 @@ StudioServer::StudioServer(StudioOptions options) : impl_(std::make_unique<Impl>
       return true;
     });
   });
-  addSceneRoutes(http, state);
-  addSynthesisRoutes(http, state);
-  http.Get(R"(/(.*))", [this](const httplib::Request& request, httplib::Response& response) {
-    if (request.path.rfind("/api/", 0) == 0) {
-      sendJson(response, {{"error", "no such route: GET " + request.path}}, 404);
-      return;
-    }
+  addSceneRoutes(router, state);
+  addSynthesisRoutes(router, state);
+  // The page's files: any path outside /api/; a file that is not there is 404 for every method.
+  const auto servePage = [this](const httplib::Request& request, httplib::Response& response) {
     const auto it = impl_->assets.find(request.path);
     if (it == impl_->assets.end()) {
       const bool noPage = impl_->assets.find("/") == impl_->assets.end();
@@ -184,7 +208,9 @@ StudioServer::StudioServer(StudioOptions options) : impl_(std::make_unique<Impl>
     }
     response.set_header("Cache-Control", "no-cache");
     response.set_content(readFileBytes(it->second.string()), kContentTypes.at(it->second.extension().string()));
-  });
+  };
+  router.get(R"(/(?!api/).*)", servePage, [this](const std::string& path) { return impl_->assets.count(path) > 0; });
+  router.install(http);
 
   // The mesh and exemplar to start with, by catalog name or as a local file.
   std::lock_guard<std::mutex> lock(state.mutex);
@@ -210,6 +236,7 @@ StudioServer::StudioServer(StudioOptions options) : impl_(std::make_unique<Impl>
         std::make_shared<StudioScene>(entry.id, entry.name, readMesh(entry.path), state.options.displayVertices);
     ++state.sceneSerial;
   }
+  state.keepSceneInUse();
 }
 
 StudioServer::~StudioServer() {

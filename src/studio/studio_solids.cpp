@@ -49,18 +49,30 @@ std::vector<Vec3f> KeptSolid::colors(const std::vector<Vec3f>& points, const std
 std::shared_ptr<KeptSolid> SolidShelf::find(const std::string& key) {
   std::lock_guard<std::mutex> lock(mutex_);
   for (auto it = solids_.begin(); it != solids_.end(); ++it)
-    if (it->first == key) {
+    if (it->key == key) {
       solids_.splice(solids_.begin(), solids_, it);
-      return it->second;
+      return it->solid;
     }
   return nullptr;
 }
 
-void SolidShelf::keep(const std::string& key, const std::shared_ptr<KeptSolid>& solid) {
+void SolidShelf::keep(Kept kept) {
   std::lock_guard<std::mutex> lock(mutex_);
-  solids_.remove_if([&](const auto& entry) { return entry.first == key; });
-  solids_.push_front({key, solid});
+  solids_.remove_if([&](const Kept& entry) { return entry.key == kept.key; });
+  solids_.push_front(std::move(kept));
   while (solids_.size() > keep_) solids_.pop_back();
+}
+
+void SolidShelf::forgetExemplar(const std::string& exemplarId) {
+  std::list<Kept> dropped;  // destroyed after the lock: freeing a solid takes a moment
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (auto it = solids_.begin(); it != solids_.end();) {
+      const auto next = std::next(it);
+      if (it->exemplarId == exemplarId) dropped.splice(dropped.end(), solids_, it);
+      it = next;
+    }
+  }
 }
 
 void SolidShelf::clear() {

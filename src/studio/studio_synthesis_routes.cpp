@@ -53,7 +53,7 @@ std::shared_ptr<KeptSolid> solidFor(StudioState& state, const JobInputs& inputs,
   key << method << '|' << inputs.exemplar.id << '|' << inputs.texture.tiles << '|' << inputs.texture.seed << '|'
       << inputs.sceneSerial << '|' << (lazy ? inputs.fieldRevision : -1);
   return state.solids.get(
-      key.str(),
+      key.str(), inputs.exemplar.id,
       [&] {
         SolidRecipe recipe;
         recipe.method = parseSolidMethod(method);
@@ -134,6 +134,19 @@ Mesh cutMesh(StudioState& state, const JobInputs& inputs, int axis, float fracti
   return std::move(cut.mesh);
 }
 
+// The volume as the command line's writer puts it in a .vdb file. The file is a scratch file the
+// export reads back at once, so it is moved into place now, not with the run's outputs
+// (output_batch.h) that `texsynth studio`, as every command, runs inside. Errors name it
+// "volume.vdb" (answer() drops its private folder).
+std::string volumeFileBytes(const Volume& volume) {
+  ScratchDirectory scratch("the exported volume");
+  const std::string path = scratch.path() + "/volume.vdb";
+  VolumeWriteOptions options;
+  options.staging = Staging::Immediately;
+  writeVolume(path, volume, options);
+  return readFileBytes(path);
+}
+
 int parseAxis(const nlohmann::json& value) {
   if (value.is_string()) {
     const std::string a = value.get<std::string>();
@@ -145,8 +158,9 @@ int parseAxis(const nlohmann::json& value) {
 
 }  // namespace
 
-void addSynthesisRoutes(httplib::Server& server, StudioState& state) {
-  server.Post("/api/preview", [&state](const httplib::Request& request, httplib::Response& response) {
+void addSynthesisRoutes(StudioRouter& router, StudioState& state) {
+  const std::size_t json = state.options.limits.jsonBytes;
+  router.post("/api/preview", json, [&state](const httplib::Request& request, httplib::Response& response) {
     answer(response, [&] {
       nlohmann::json body = jsonBody(request);
       std::optional<Vec3f> camera;  // where the page looks from: the lazy solid refines what faces it first
@@ -162,6 +176,7 @@ void addSynthesisRoutes(httplib::Server& server, StudioState& state) {
       {
         std::lock_guard<std::mutex> lock(state.mutex);
         state.texture = inputs.texture;  // what later cuts and exports use
+        state.keepSceneInUse();
       }
       const std::string job =
           state.jobs->submit("preview", [&state, inputs, camera](Progress& progress, const std::string& jobId) {
@@ -170,7 +185,7 @@ void addSynthesisRoutes(httplib::Server& server, StudioState& state) {
       sendJson(response, {{"job", job}, {"texture", inputs.texture.toJson()}}, 202);
     });
   });
-  server.Post("/api/cut", [&state](const httplib::Request& request, httplib::Response& response) {
+  router.post("/api/cut", json, [&state](const httplib::Request& request, httplib::Response& response) {
     answer(response, [&] {
       nlohmann::json body = jsonBody(request);
       if (!body.is_object() || !body.contains("axis") || !body.contains("position"))
@@ -202,14 +217,14 @@ void addSynthesisRoutes(httplib::Server& server, StudioState& state) {
       sendJson(response, {{"job", job}}, 202);
     });
   });
-  server.Get(R"(/api/results/([A-Za-z0-9-]+))", [&state](const httplib::Request& request, httplib::Response& response) {
+  router.get(R"(/api/results/([A-Za-z0-9-]+))", [&state](const httplib::Request& request, httplib::Response& response) {
     answer(response, [&] {
       const auto result = state.results.get(request.matches[1]);
       if (!result) throw notFound("result '" + std::string(request.matches[1]) + "'");
       response.set_content(result->bytes, result->contentType);
     });
   });
-  server.Post("/api/export", [&state](const httplib::Request& request, httplib::Response& response) {
+  router.post("/api/export", json, [&state](const httplib::Request& request, httplib::Response& response) {
     answer(response, [&] {
       nlohmann::json body = jsonBody(request);
       if (!body.is_object() || !body.contains("format") || !body["format"].is_string())
@@ -217,8 +232,8 @@ void addSynthesisRoutes(httplib::Server& server, StudioState& state) {
       const std::string format = body["format"].get<std::string>();
       int resolution = 64;
       if (body.contains("resolution")) {
-        if (!body["resolution"].is_number_integer() || body["resolution"].get<int>() < 2 ||
-            body["resolution"].get<int>() > 256)
+        if (!body["resolution"].is_number_integer() || body["resolution"].get<std::int64_t>() < 2 ||
+            body["resolution"].get<std::int64_t>() > 256)
           throw HttpError(400, "resolution: give a whole number in [2, 256]");
         resolution = body["resolution"].get<int>();
       }
@@ -241,10 +256,7 @@ void addSynthesisRoutes(httplib::Server& server, StudioState& state) {
           const Box3f box = inputs.scene->bounds();
           const Volume volume =
               solid->consume(noProgress(), [&](const SolidTexture& s) { return sampleVolume(s, box, resolution); });
-          ScratchDirectory scratch("the exported volume");
-          const std::string path = scratch.path() + "/volume.vdb";
-          writeVolume(path, volume);
-          bytes = readFileBytes(path);
+          bytes = volumeFileBytes(volume);
         }
       } else {
         throw HttpError(400, "format '" + format + "': give glb, tsfield, vdb or sketch");

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "test_support.h"
+#include "texsynth/animation/flow_limits.h"
 #include "texsynth/core/error.h"
 #include "texsynth/core/math.h"
 #include "texsynth/core/parallel.h"
@@ -178,7 +179,7 @@ TEST(ImageFlow, BadVelocityImagesNameTheFile) {
   broken.at(5, 3, 1) = NAN;
   writeImage(dir.file("nan.exr"), broken);
   expectInputError([&] { ImageFlow::parse(dir.file("nan.exr"), 16, 16); }, dir.file("nan.exr"),
-                   "non-finite velocity at pixel (5, 3)");
+                   "velocity of nan at pixel (5, 3)");
 }
 
 TEST(ImageFlow, PatternsReadOneFilePerFrame) {
@@ -207,7 +208,8 @@ TEST(ImageFlow, BadSpecsAreFlowParameterErrors) {
   expectFlowError([] { ImageFlow::parse("vortex:strength=fast", 8, 8); }, "strength='fast' is not a finite number");
   expectFlowError([] { ImageFlow::parse("vortex:strength=nan", 8, 8); }, "not a finite number");
   expectFlowError([] { ImageFlow::parse("sink:strength=1e40", 8, 8); }, "not a finite number");
-  expectFlowError([] { ImageFlow::parse("vortex:radius=0", 8, 8); }, "radius=0 must be > 0");
+  expectFlowError([] { ImageFlow::parse("vortex:radius=0", 8, 8); }, "radius=0 is outside [0.001, 16]");
+  expectFlowError([] { ImageFlow::parse("uniform:dx=5000", 8, 8); }, "dx=5000 is outside [-4096, 4096]");
   expectFlowError([] { ImageFlow::parse("vortex:cx=1.5", 8, 8); }, "cx=1.5 is outside [0, 1]");
   expectFlowError([] { ImageFlow::parse("saddle:cy=-0.1", 8, 8); }, "cy=-0.1 is outside [0, 1]");
   expectFlowError([] { ImageFlow::parse("vortex:cx=0.1,cx=0.2", 8, 8); }, "given twice");
@@ -216,8 +218,30 @@ TEST(ImageFlow, BadSpecsAreFlowParameterErrors) {
   expectFlowError([] { ImageFlow::parse("", 8, 8); }, "empty");
   expectFlowError([] { ImageFlow::parse("flow/%s.exr", 8, 8); }, "frame number");
   expectFlowError([] { ImageFlow::parse("flow/%d_%d.exr", 8, 8); }, "more than one frame number");
-  expectFlowError([] { ImageFlow::parse("vortex", 8, 8, {.scale = INFINITY}); }, "scale");
-  expectFlowError([] { ImageFlow::parse("uniform:dx=3e38", 8, 8, {.scale = 10}); }, "overflow");
+}
+
+TEST(ImageFlow, ScalesBeyondTheBoundAreScaleErrors) {
+  for (const float scale : {INFINITY, 65.0f, -1e30f}) {
+    try {
+      ImageFlow::parse("vortex", 8, 8, {.scale = scale});
+      ADD_FAILURE() << "accepted scale " << scale;
+    } catch (const ParameterError& e) {
+      EXPECT_EQ(e.parameter(), "flowScale");
+    }
+  }
+  EXPECT_NO_THROW(ImageFlow::parse("uniform:dx=4096", 8, 8, {.scale = -64}));
+}
+
+TEST(ImageFlow, SpecificationsAreCheckedWithoutASizeOrMesh) {
+  EXPECT_NO_THROW(checkFlowSpecification("vortex:strength=2"));
+  EXPECT_NO_THROW(checkFlowSpecification("swirl:seed=7"));
+  EXPECT_NO_THROW(checkFlowSpecification("flow/%04d.exr"));  // files are not opened
+  expectFlowError([] { checkFlowSpecification("saddle:strength=1e30"); }, "outside");
+  expectFlowError([] { checkFlowSpecification("swirl:seed=x"); }, "not a whole number");
+  expectFlowError([] { checkFlowSpecification("flow/%x.exr"); }, "frame number");
+  expectFlowError([] { checkFlowSpecification("twirl"); },
+                  "in 2D: uniform, vortex, source, sink, saddle; on a mesh: "
+                  "along-field, downhill, swirl");
 }
 
 TEST(ImageFlow, Descriptions) {

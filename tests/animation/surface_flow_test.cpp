@@ -208,6 +208,6 @@ TEST(SurfaceFlow, BadSpecsAreFlowParameterErrors) {
   expectParameterError(parse("swirl:strength=inf"), "flow");
   expectParameterError(parse("along-field:strength="), "flow");
   expectParameterError(parse("downhill", {.up = Vec3f::Zero()}), "flow");
-  expectParameterError(parse("swirl", {.scale = NAN}), "flow");
+  expectParameterError(parse("swirl", {.scale = NAN}), "flowScale");
   expectParameterError(parse("flow/%x.txt"), "flow");
 }

@@ -25,6 +25,7 @@ struct Inputs {
   std::string exemplar = dir.file("ex.png"), tiny = dir.file("one.png"), mask = dir.file("mask.png");
   std::string cube = dir.file("cube.ply"), flat = dir.file("flat.off"), sketch = dir.file("sketch.json");
   std::string volume = dir.file("vol.nrrd"), colored = dir.file("colored.ply");
+  std::string solid = dir.file("solid.tsgs"), strokes = dir.file("strokes.json");
 
   Inputs() {
     writeImage(exemplar, test::makeTestPattern(32, 32));
@@ -35,6 +36,7 @@ struct Inputs {
     writeMesh(cube, makeBoxMesh(Vec3f::Zero(), Vec3f::Ones()));
     test::writeBytes(flat, "OFF\n3 1 0\n0.5 0.5 0.5\n0.5 0.5 0.5\n0.5 0.5 0.5\n3 0 1 2\n");
     test::writeBytes(sketch, R"({"curves": [{"points": [[0.1, 0.2, 1.0], [0.5, 0.5, 1.0], [0.9, 0.6, 1.0]]}]})");
+    test::writeBytes(strokes, R"({"color": [1, 0, 0], "strokes": [{"points": [[2, 2, 2], [6, 6, 6]]}]})");
     // A closed octahedron with vertex colors: eval's mesh mode.
     Mesh octahedron;
     octahedron.positions = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
@@ -279,6 +281,23 @@ std::string sweepCommand(const std::string& command, const HelpOption& option, c
                                   : in.exemplar);
   if (command == "demo") base = "demo -o " + out + " --exemplar " + in.exemplar + " --mesh " + in.cube;
   const std::string& d = option.description;
+  // The commands of the second reliability pass; mesh runs on a small retiling of the cube.
+  const auto unless = [&](const char* swept, const std::string& text) { return flag == swept ? "" : " " + text; };
+  const std::string smallMesh =
+      " --mesh " + in.cube + unless("--vertices", "--vertices 600") + unless("--levels", "--levels 1");
+  if (command == "animate")
+    base = "animate " + in.exemplar + " --flow vortex -o " + out + "/%04d.png" + unless("--frames", "--frames 2") +
+           (d.rfind("With --mesh", 0) == 0 ? smallMesh + unless("--render-size", "--render-size 16")
+                                           : unless("--size", "--size 8"));
+  if (command == "surface") {
+    base = "surface " + in.exemplar + smallMesh + " -o " + out + ".ply";
+    if (d.rfind("With --render", 0) == 0)
+      base += " --render " + out + "_r.png" + unless("--render-size", "--render-size 16");
+    if (d.rfind("With --bake", 0) == 0) base += " --bake " + out + "_b.png";
+  }
+  if (command == "edit") base = "edit " + in.solid + " --strokes " + in.strokes + " -o " + out + ".tsgs";
+  if (command == "vectorize")
+    base = "vectorize " + in.volume + " -o " + out + ".tsgs" + (d.rfind("--optimize", 0) == 0 ? " --optimize" : "");
   if (d.rfind("lazy", 0) == 0)  // one level without passes: accepted values finish in a second
     base += std::string(" --method lazy") + (flag == "--levels" ? "" : " --levels 1") +
             (flag == "--coarsest-passes" ? "" : " --coarsest-passes 0");
@@ -292,8 +311,10 @@ std::string sweepCommand(const std::string& command, const HelpOption& option, c
 TEST(ReliabilityArguments, SweepOfEveryNumericFlag) {
   Inputs in;
   ASSERT_EQ(in.run("solid " + in.exemplar + " -o " + in.volume + " --resolution 16").exitCode, 0);
-  const std::map<std::string, std::size_t> expected = {{"image", 16}, {"solid", 17}, {"field", 7},
-                                                       {"render", 5}, {"eval", 4},   {"demo", 2}};
+  ASSERT_EQ(in.run("vectorize " + in.volume + " -o " + in.solid).exitCode, 0);
+  const std::map<std::string, std::size_t> expected = {{"image", 16}, {"solid", 17},   {"field", 7},   {"render", 5},
+                                                       {"eval", 4},   {"demo", 2},     {"animate", 9}, {"surface", 6},
+                                                       {"edit", 3},   {"vectorize", 2}};
   const std::vector<std::string> values = {"nan", "inf", "-1", "0", "1e300", "99999999999999999999"};
   int tried = 0;
   for (const auto& [name, minimum] : expected) {
@@ -324,5 +345,21 @@ TEST(ReliabilityArguments, SweepOfEveryNumericFlag) {
         EXPECT_TRUE(named) << r.err;
       }
   }
-  EXPECT_GT(tried, 250);
+  EXPECT_GT(tried, 370);
+}
+
+// The sweep's values in every numeric key of every flow preset: refused as typed, naming --flow.
+TEST(ReliabilityArguments, SweepOfEveryFlowPresetValue) {
+  Inputs in;
+  const std::vector<std::string> presets = {
+      "uniform:dx=",        "uniform:dy=",     "vortex:strength=", "vortex:cx=",
+      "source:cy=",         "sink:radius=",    "saddle:strength=", "along-field:strength=",
+      "downhill:strength=", "swirl:strength=", "swirl:seed="};
+  for (const std::string& preset : presets)
+    for (const char* value : {"nan", "inf", "-1e300", "1e300", "99999999999999999999", "x"}) {
+      const std::string command = "animate " + in.exemplar + " --flow " + preset + value + " --size 8 --frames 2 -o " +
+                                  in.dir.file("f/%04d.png");
+      SCOPED_TRACE(command);
+      expectUsageError(in, command, "--flow");
+    }
 }

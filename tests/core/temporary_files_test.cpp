@@ -12,6 +12,7 @@
 
 #include "test_support.h"
 #include "texsynth/core/atomic_file.h"
+#include "texsynth/core/output_batch.h"
 
 using namespace texsynth;
 namespace fs = std::filesystem;
@@ -96,6 +97,57 @@ TEST(TemporaryFiles, ACatchableSignalRemovesThemAndStillKills) {
     EXPECT_TRUE(fs::exists(dir.file("out.bin")));
     EXPECT_FALSE(fs::exists(dir.file("big.bin")));
   }
+}
+
+// A long run stages more temporaries than the signal-safe registry holds, in directories it
+// created, beside a scratch directory: a signal removes all of it, and keeps what was there.
+TEST(TemporaryFiles, ASignalRemovesEveryStagedFileCreatedDirectoryAndScratch) {
+  test::TempDir dir;
+  const std::string scratchFile = dir.file("scratch-path.txt");
+  test::writeBytes(dir.file("keep.png"), "a user's file");
+  pid_t child = ::fork();
+  if (child == 0) {
+    removeTemporariesOnSignals();
+    OutputBatch batch;
+    createOutputDirectories(dir.file("frames/deep"));
+    for (int frame = 0; frame < 400; ++frame)  // past the 256 registry slots
+      writeFileAtomically(dir.file("frames/deep/" + std::to_string(frame) + ".png"), "frame");
+    writeFileAtomically(dir.file("keep.png"), "replacement");  // staged beside a kept file
+    ScratchDirectory scratch("a video");
+    test::writeBytes(scratch.path() + "/0.png", "copy for the encoder");
+    writeFileAtomically(scratchFile, scratch.path(), Staging::Immediately);
+    ::raise(SIGTERM);
+    ::_exit(0);  // not reached
+  }
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM);
+  EXPECT_FALSE(fs::exists(dir.file("frames"))) << "a created directory (or a frame) survived";
+  EXPECT_EQ(countTemporaries(dir.path()), 0);
+  EXPECT_EQ(readFileBytes(dir.file("keep.png")), "a user's file");
+  ASSERT_TRUE(fs::exists(scratchFile));
+  EXPECT_FALSE(fs::exists(readFileBytes(scratchFile))) << "the scratch directory survived";
+}
+
+// While signals are held, one only waits: the step finishes, then the process dies of it.
+TEST(TemporaryFiles, HeldSignalsActWhenReleased) {
+  test::TempDir dir;
+  pid_t child = ::fork();
+  if (child == 0) {
+    removeTemporariesOnSignals();
+    {
+      SignalsHeld held;
+      ::raise(SIGTERM);
+      test::writeBytes(dir.file("after.txt"), "the held step finished");
+    }
+    test::writeBytes(dir.file("too-late.txt"), "not reached");
+    ::_exit(0);
+  }
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM);
+  EXPECT_TRUE(fs::exists(dir.file("after.txt")));
+  EXPECT_FALSE(fs::exists(dir.file("too-late.txt")));
 }
 
 TEST(TemporaryFiles, AFileSizeLimitIsAnErrorNotADeath) {

@@ -71,7 +71,7 @@ TEST(StudioApi, CurvesTurnTheFieldAndTheGlyphs) {
 TEST(StudioApi, BadRequestsGetOneMessageAndTheServerKeepsServing) {
   TestStudio studio;
   EXPECT_NE(studio.call("POST", "/api/sketch/curves", "{\"points\": [[0,0", 400)["error"].get<std::string>().find(
-                "malformed JSON"),
+                "not valid JSON"),
             std::string::npos);
   nlohmann::json off = topCurve();
   off["points"] = {{0.2, 0.3, 3.0}, {0.5, 0.45, 3.0}};  // two units above the box

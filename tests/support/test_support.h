@@ -32,6 +32,10 @@ void expectInputError(const std::function<void()>& read, const std::string& path
 // Expects `run` to throw a ParameterError naming `parameter`.
 void expectParameterError(const std::function<void()>& run, const std::string& parameter);
 
+// The raw answer to an HTTP `request` sent to 127.0.0.1:`port` over a fresh connection, read until
+// the server closes it ("" if nothing answers).
+std::string loopbackExchange(int port, const std::string& request);
+
 // A small deterministic RGB test pattern with structure at several scales.
 Image makeTestPattern(int width, int height, unsigned seed = 1);
 

@@ -21,6 +21,9 @@
 
 namespace texsynth {
 
+// Largest lambda of E_c: far past the point where frames are pure advection.
+inline constexpr float kMaxFlowCoherence = 1e6f;
+
 struct FlowAnimationOptions {
   // lambda: the weight of the previous frame carried along the flow against all the votes of the
   // neighborhoods a sample lies in. 0 = independent frames; >= 1e6 acts as pure advection.

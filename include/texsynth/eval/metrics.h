@@ -22,6 +22,7 @@
 #include <cstdint>
 
 #include "texsynth/core/image.h"
+#include "texsynth/core/progress.h"
 #include "texsynth/core/volume.h"
 
 namespace texsynth {
@@ -58,8 +59,11 @@ struct VolumeQuality {
 // the exemplar. Per axis, coherence and completeness are the RMS over all patches of all its
 // slices (each slice has as many patches), histogram, periodicity, lattice and sharpness the mean
 // over its slices.
-// Throws ParameterError for bad options, slicesPerAxis above an extent, or slices smaller than
-// the patch size.
-VolumeQuality evaluateVolume(const Image& exemplar, const Volume& volume, const MetricOptions& options = {});
+// Before any work, throws ParameterError for bad options, slicesPerAxis above an extent
+// ("slicesPerAxis"), a patch larger than the smallest slice ("patchSize", naming the slices'
+// size), a non-finite voxel ("volume") or an exemplar smaller than the patch ("exemplar").
+// `progress` gets a stage for indexing the exemplar and one unit per evaluated slice.
+VolumeQuality evaluateVolume(const Image& exemplar, const Volume& volume, const MetricOptions& options = {},
+                             Progress& progress = noProgress());
 
 }  // namespace texsynth

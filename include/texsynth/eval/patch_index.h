@@ -5,7 +5,9 @@
 // The vectors are rotated into the PCA basis of the indexed patches: an orthonormal rotation
 // keeps every distance, but puts most of the variance into the first coordinates, so an exact
 // KD-tree split on those coordinates prunes well and partial distances (summed in PCA order)
-// can stop early against the best match so far. Queries start from a guess propagated from
+// can stop early against the best match so far. With few patches of many values (large patches
+// on a small image) the PCA would cost more than searching every patch, so the raw values are
+// used instead: as exact, pruned less. Queries start from a guess propagated from
 // their left (or upper) neighbour's match, which makes that bound tight from the start.
 // Search in float picks the neighbour; the reported distance is recomputed in double from
 // the pixels. Ties (within float rounding) go to the lowest patch index, so results never

@@ -40,6 +40,10 @@ struct MeshHierarchy {
 MeshHierarchy buildMeshHierarchy(const Mesh& input, const MeshHierarchyOptions& options, const std::string& source,
                                  Progress& progress = noProgress());
 
+// The fewest finest-level vertices that leave the coarsest of `levels` levels the 32 vertices a
+// retiling needs (meshLevelVertexCounts refuses fewer). For checks before any work.
+int minimumFinestVertices(int levels, float ratio);
+
 // The target vertex count of every level, coarsest first (what buildMeshHierarchy asks
 // retileMesh for). Throws ParameterError as buildMeshHierarchy.
 std::vector<int> meshLevelVertexCounts(const MeshHierarchyOptions& options);

@@ -9,13 +9,16 @@
 // problem. Writers go through writeAtomically: a failed write never leaves a partial file.
 #include <string>
 
+#include "texsynth/core/atomic_file.h"
 #include "texsynth/core/volume.h"
 
 namespace texsynth {
 
 // Reads a .nrrd volume. Sample types: uint8, uint16, float (also int8, int16, int32, uint32,
 // double). Integer samples are divided by their type's maximum (uint8 by 255, int16 by 32767
-// ...), so 8/16-bit volumes come back in [0,1] like images; float and double are as stored.
+// ...), so 8/16-bit volumes come back in [0,1] like images; float and double are as stored,
+// but a NaN, an infinity or a magnitude over kMaxColorMagnitude (1e6, see color_values.h) in
+// any format is an InputError naming the file and the first such voxel.
 // Detached data files ("data file:"), "line skip" and "byte skip" are rejected, and so is a
 // file that contradicts itself: more data than 'sizes' says (raw, gzip or after the gzip
 // stream), an unknown or repeated header field, a per-axis field ('kinds', 'spacings' ...)
@@ -37,6 +40,9 @@ Volume readVolume(const std::string& path);
 struct VolumeWriteOptions {
   bool gzip = true;          // NRRD only: gzip-encode the samples (else raw)
   bool floatSamples = true;  // NRRD only: 32-bit float samples; false: uint8, clipped to [0,1]
+  // Inside an OutputBatch: with the run (default), or at once (scratch files the run reads back
+  // itself, such as the studio's exported volume).
+  Staging staging = Staging::WithRun;
 };
 
 // Writes a volume; the format comes from the extension:

@@ -17,9 +17,11 @@ class JobLanes;
 
 struct StudioOptions {
   std::string host = "127.0.0.1";
-  int port = 8080;      // 0: any free port (tests)
-  std::string webRoot;  // folder with index.html, app.js, style.css and node_modules/three; empty: API only
-  int workers = 2;      // synthesis threads (each job also uses the library's parallel loops)
+  int port = 8080;  // 0: any free port (tests)
+  // Folder with index.html, app.js, style.css and node_modules/three (InputError at construction if
+  // it holds no index.html); empty: the API only.
+  std::string webRoot;
+  int workers = 2;  // synthesis threads (each job also uses the library's parallel loops)
   UploadLimits limits;
   std::string cacheDirectory;  // disk cache shared with the command line (exemplar analysis, lazy levels)
   // The models are subdivided to at least this many vertices (at most 4x) for per-vertex colours.
@@ -30,7 +32,7 @@ struct StudioOptions {
 
 class StudioServer {
  public:
-  // Loads the catalog and the initial mesh and exemplar; throws their loaders' errors.
+  // Loads the catalog, the page's file list and the initial mesh and exemplar; throws their errors.
   explicit StudioServer(StudioOptions options);
   ~StudioServer();
   StudioServer(const StudioServer&) = delete;

@@ -50,24 +50,33 @@ class SolidShelf {
  public:
   // Keeps the `keep` most recently used solids.
   explicit SolidShelf(std::size_t keep = 4) : keep_(keep) {}
-  // The solid for `key`, built by `recipe()` (called without the shelf's lock held) if not kept.
+  // The solid for `key`, made from the exemplar `exemplarId` by `recipe()` (called without the
+  // shelf's lock held) if not kept.
   template <typename MakeRecipe>
-  std::shared_ptr<KeptSolid> get(const std::string& key, MakeRecipe recipe, Progress& progress);
+  std::shared_ptr<KeptSolid> get(const std::string& key, const std::string& exemplarId, MakeRecipe recipe,
+                                 Progress& progress);
+  // Drops the solids made from an exemplar the catalog forgot (a job still using one keeps it).
+  void forgetExemplar(const std::string& exemplarId);
   void clear();
 
  private:
+  struct Kept {
+    std::string key, exemplarId;
+    std::shared_ptr<KeptSolid> solid;
+  };
   std::shared_ptr<KeptSolid> find(const std::string& key);
-  void keep(const std::string& key, const std::shared_ptr<KeptSolid>& solid);
+  void keep(Kept kept);
   const std::size_t keep_;
   std::mutex mutex_;
-  std::list<std::pair<std::string, std::shared_ptr<KeptSolid>>> solids_;  // most recent first
+  std::list<Kept> solids_;  // most recent first
 };
 
 template <typename MakeRecipe>
-std::shared_ptr<KeptSolid> SolidShelf::get(const std::string& key, MakeRecipe recipe, Progress& progress) {
+std::shared_ptr<KeptSolid> SolidShelf::get(const std::string& key, const std::string& exemplarId, MakeRecipe recipe,
+                                           Progress& progress) {
   if (auto found = find(key)) return found;
   auto solid = std::make_shared<KeptSolid>(buildSolid(recipe(), progress));
-  keep(key, solid);
+  keep({key, exemplarId, solid});
   return solid;
 }
 
