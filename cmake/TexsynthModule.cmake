@@ -24,7 +24,12 @@ function(texsynth_module name)
   add_library(texsynth_${name} STATIC ${sources})
   target_include_directories(texsynth_${name} PUBLIC ${CMAKE_SOURCE_DIR}/include)
   target_link_libraries(texsynth_${name} PUBLIC ${ARG_DEPS} PRIVATE texsynth_warnings)
-  target_compile_definitions(texsynth_${name} PUBLIC TEXSYNTH_DATA_DIR="${TEXSYNTH_DATA_DIR}")
+  # Only the file that reads it sees the (clone-specific) path, so every other file compiles the
+  # same in any checkout and a compiler cache can share it.
+  if(name STREQUAL "core")
+    set_source_files_properties(${CMAKE_SOURCE_DIR}/src/core/data_paths.cpp PROPERTIES COMPILE_DEFINITIONS
+                                TEXSYNTH_DATA_DIR="${TEXSYNTH_DATA_DIR}")
+  endif()
 endfunction()
 
 function(texsynth_tests name)

@@ -6,7 +6,7 @@ set -euo pipefail
 
 PACKAGES=(
   # toolchain
-  build-essential cmake ninja-build pkg-config git clang-format
+  build-essential cmake ninja-build pkg-config git clang-format ccache
   # libraries
   libeigen3-dev libtbb-dev libstb-dev libopenexr-dev libimath-dev zlib1g-dev libjpeg62-turbo-dev
   libnanoflann-dev libfaiss-dev libcgal-dev libopenvdb-dev libboost-iostreams-dev libblosc-dev libtinygltf-dev
