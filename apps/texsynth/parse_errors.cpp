@@ -140,8 +140,16 @@ std::string describeParseError(const CLI::ParseError& error, const CLI::App& app
     return std::string(m[1]) + " and " + std::string(m[2]) + " cannot be given together: drop one";
   if (std::regex_match(what, m, std::regex("(\\S+) requires (\\S+)")))
     return std::string(m[1]) + " needs " + std::string(m[2]) + " too";
-  if (std::regex_match(what, m, std::regex("(\\S+): (\\S+) required (\\S+) missing")))
-    return std::string(m[1]) + " needs a value (" + std::string(m[3]) + ")";
+  if (std::regex_match(what, m, std::regex("(\\S+): \\d+ required (.*) missing")))
+    return std::string(m[1]) + " needs a value (" + std::string(m[2]) + ")";
+  if (std::regex_match(what, m, std::regex("(\\S+): (.*) not in \\{(.*)\\}"))) {
+    std::vector<std::string> choices;
+    std::istringstream split(m[3].str());
+    for (std::string choice; std::getline(split, choice, ',');) choices.push_back(choice);
+    const std::string nearest = nearestName(m[2], choices);
+    return std::string(m[1]) + ": '" + std::string(m[2]) + "' is not one of " + joined(choices) +
+           (nearest.empty() ? "" : "; did you mean '" + nearest + "'?");
+  }
   return what;  // ours (validators name the flag), or already plain ("--mesh is required")
 }
 

@@ -224,6 +224,11 @@ TEST(ReliabilityCommands, ParserErrorsNameWhatWasTyped) {
   test::expectOneLineError(r, 2, "unknown command 'surfac'; did you mean 'surface'?");
   r = in.run("image " + in.exemplar + " --sze 8 -o " + in.dir.file("a.png"));
   test::expectOneLineError(r, 2, "did you mean '--size'?");
+  r = in.run("image " + in.exemplar + " --method optimise -o " + in.dir.file("a.png"));
+  test::expectOneLineError(r, 2, "--method: 'optimise' is not one of");
+  EXPECT_NE(r.err.find("did you mean 'optimize'?"), std::string::npos) << r.err;
+  r = in.run("image " + in.exemplar + " -o " + in.dir.file("a.png") + " --threads");
+  test::expectOneLineError(r, 2, "--threads needs a value");
   r = in.run("image " + in.exemplar + " -o " + in.dir.file("a.png") + " -o " + in.dir.file("b.png"));
   test::expectOneLineError(r, 2, "--output takes one value");
   r = in.run("animate " + in.exemplar + " --flow vortex --fps 0 -o " + in.dir.file("f/%04d.png"));
