@@ -3,6 +3,7 @@
 #include "texsynth/io/image_io.h"
 
 #include <cstring>
+#include <filesystem>
 #include <optional>
 
 #include "image_codecs.h"
