@@ -227,7 +227,7 @@ TEST(ReliabilityCommands, ParserErrorsNameWhatWasTyped) {
   r = in.run("image " + in.exemplar + " --method optimise -o " + in.dir.file("a.png"));
   test::expectOneLineError(r, 2, "--method: 'optimise' is not one of");
   EXPECT_NE(r.err.find("did you mean 'optimize'?"), std::string::npos) << r.err;
-  r = in.run("image " + in.exemplar + " -o " + in.dir.file("a.png") + " --threads");
+  r = runTexsynth("image " + in.exemplar + " -o " + in.dir.file("a.png") + " --threads", in.dir);  // last: no value
   test::expectOneLineError(r, 2, "--threads needs a value");
   r = in.run("image " + in.exemplar + " -o " + in.dir.file("a.png") + " -o " + in.dir.file("b.png"));
   test::expectOneLineError(r, 2, "--output takes one value");

@@ -71,9 +71,8 @@ TEST(SketchJson, RejectsMalformedDocumentsWithTheirPlace) {
 }
 
 TEST(SketchJson, ShippedExamplesDesignFieldsOnTheirMeshes) {
-  // Next to this source file: tests/field/ -> examples/sketches/.
-  const std::string examples =
-      (std::filesystem::path(__FILE__).parent_path().parent_path().parent_path() / "examples" / "sketches").string();
+  // The repository's examples/sketches/.
+  const std::string examples = (std::filesystem::path(TEXSYNTH_EXAMPLES_DIR) / "sketches").string();
   for (const auto& [sketchName, meshName] :
        {std::pair{"bunny.json", "bunny00.off"}, std::pair{"cow.json", "cow.off"}}) {
     SCOPED_TRACE(sketchName);
