@@ -15,7 +15,8 @@
 // strength, a source pushes outwards, a sink pulls inwards, a saddle pushes out along x and in
 // along y; a negative strength reverses each. Distances from the centre are the shortest ones
 // on the torus; r/R is measured in radii of the width along x and of the height along y (an
-// ellipse on a non-square output). cx and cy lie in [0, 1], radius > 0, every value finite.
+// ellipse on a non-square output). cx and cy lie in [0, 1], radius in [0.001, 16], strengths and
+// dx, dy within kMaxFlowSpeed (flow_limits.h).
 //
 // Velocity images (.exr, .png, or any readImage format): channels 0 and 1 are x and y. EXR
 // stores pixels per frame; 8- and 16-bit images store v = 2 c - 1 in [-1, 1] pixels per frame.
@@ -31,16 +32,17 @@
 namespace texsynth {
 
 struct ImageFlowOptions {
-  float scale = 1.0f;  // multiplies every velocity; finite
+  float scale = 1.0f;  // multiplies every velocity; |scale| <= kMaxFlowScale
 };
 
 class ImageFlow {
  public:
   // Parses SPEC for a width x height output. Throws ParameterError("flow", ...) for an unknown
-  // preset, a bad key or value, a malformed pattern, or a scale that is not finite or makes a
-  // velocity overflow; InputError naming the file for a missing, unreadable,
-  // too-small-in-channels (< 2), wrongly sized or non-finite velocity image (the first one, or
-  // the only one, is read here).
+  // preset, a bad key or a value outside its range (flow_limits.h) or a malformed pattern,
+  // ParameterError("flowScale", ...) for a scale beyond kMaxFlowScale; InputError naming the file
+  // for a missing, unreadable, too-small-in-channels (< 2) or wrongly sized velocity image, or one
+  // with a velocity that is not finite or beyond kMaxFlowSpeed (the first one, or the only one,
+  // is read here).
   static ImageFlow parse(const std::string& spec, int width, int height, const ImageFlowOptions& options = {});
 
   // Checks before any work that frames 0 .. frames - 2 have their files (a pattern): each one

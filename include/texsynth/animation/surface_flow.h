@@ -32,7 +32,7 @@
 namespace texsynth {
 
 struct SurfaceFlowOptions {
-  float scale = 1.0f;         // multiplies every velocity; finite
+  float scale = 1.0f;         // multiplies every velocity; |scale| <= kMaxFlowScale
   Vec3f up = Vec3f::UnitY();  // world up for `downhill` (unit or not; must be non-zero)
 };
 
@@ -45,8 +45,9 @@ struct SurfaceFlowMesh {
 
 class SurfaceFlow {
  public:
-  // Throws ParameterError("flow", ...) for an unknown preset, key or value, a malformed pattern,
-  // a scale that is not finite or overflows, or a zero or non-finite `up` for downhill;
+  // Throws ParameterError("flow", ...) for an unknown preset, key or value (flow_limits.h), a
+  // malformed pattern, or a zero or non-finite `up` for downhill; ParameterError("flowScale", ...)
+  // for a scale beyond kMaxFlowScale;
   // InputError naming the file for a missing or malformed velocity file (with the line number)
   // or one whose line count differs from `input`'s vertex count (the first or only file is read
   // here), InputError("mesh", ...) for an input mesh without triangles. `target.fieldUp` is read
