@@ -24,7 +24,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr std::string_view kMarker = ".texsynth-tmp-";
+constexpr std::string_view kMarker = kTemporaryMarker;
 
 // Eight hex digits naming this host, so a directory shared between machines never loses another
 // machine's live temporaries to a PID that happens to be free here.
@@ -224,6 +224,15 @@ bool isTemporaryName(const std::string& fileName) {
   return parseTemporaryName(fileName, host, pid);
 }
 
+std::string temporaryTargetName(const std::string& fileName) {
+  // temporaryPathFor's "." + stem + marker + "HOST-PID-N" + extension.
+  const std::size_t marker = fileName.find(kMarker);
+  if (marker == std::string::npos) return "";
+  const std::size_t start = fileName[0] == '.' && marker > 0 ? 1 : 0;
+  const std::size_t extension = fileName.find('.', marker + kMarker.size());
+  return fileName.substr(start, marker - start) + (extension == std::string::npos ? "" : fileName.substr(extension));
+}
+
 void registerTemporary(const std::string& path) {
   std::lock_guard<std::mutex> lock(registryMutex);
   static long taggedPid = 0;  // a forked child names its temporaries with its own PID
@@ -321,7 +330,7 @@ ScratchDirectory::ScratchDirectory(const std::string& forOutput) {
   std::error_code ec;
   fs::path base = fs::temp_directory_path(ec);
   if (ec) base = "/tmp";
-  std::string pattern = (base / "texsynth-scratch-XXXXXX").string();
+  std::string pattern = (base / (std::string(kScratchDirectoryPrefix) + "XXXXXX")).string();
   if (!::mkdtemp(pattern.data()))
     throw OutputError(forOutput,
                       "cannot create a scratch directory in '" + base.string() + "': " + std::strerror(errno));

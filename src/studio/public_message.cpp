@@ -3,31 +3,26 @@
 
 #include <regex>
 
+#include "texsynth/core/temporary_files.h"
+
 namespace texsynth::studio {
 
 namespace {
 
-constexpr const char* kScratch = "texsynth-scratch-";  // ScratchDirectory's folders
-constexpr const char* kTemporary = ".texsynth-tmp-";   // atomic writes' temporaries (temporary_files.h)
-
-// What a private path stands for: its file name, without a temporary's marking.
+// What a private path stands for: a temporary's target name, or its own file name.
 std::string standIn(const std::string& path) {
-  std::string name = path.substr(path.find_last_of('/') + 1);
-  if (name.rfind(kScratch, 0) == 0) return "a temporary folder";
-  if (const std::size_t marker = name.find(kTemporary); marker != std::string::npos) {
-    // ".NAME.texsynth-tmp-HOST-PID-N.EXT" -> "NAME.EXT"
-    const std::size_t extension = name.find('.', marker + 1);
-    name = name.substr(name[0] == '.' ? 1 : 0, marker - (name[0] == '.' ? 1 : 0)) +
-           (extension == std::string::npos ? "" : name.substr(extension));
-  }
-  return name;
+  const std::string name = path.substr(path.find_last_of('/') + 1);
+  if (name.rfind(kScratchDirectoryPrefix, 0) == 0) return "a temporary folder";
+  const std::string target = temporaryTargetName(name);
+  return target.empty() ? name : target;
 }
 
 }  // namespace
 
 std::string withoutTemporaryPaths(const std::string& message) {
   // A path runs to a space or a quote; a trailing ':' or ',' is the sentence's.
-  static const std::regex kPath(R"([^\s'"]*(texsynth-scratch-|\.texsynth-tmp-)[^\s'"]*?(?=[:,;]?(\s|'|"|$)))");
+  static const std::regex kPath(R"([^\s'"]*()" + std::string(kScratchDirectoryPrefix) + R"(|\)" +
+                                std::string(kTemporaryMarker) + R"()[^\s'"]*?(?=[:,;]?(\s|'|"|$)))");
   std::string out;
   auto last = message.cbegin();
   for (std::sregex_iterator it(message.begin(), message.end(), kPath), end; it != end; ++it) {

@@ -4,6 +4,7 @@
 // signal removes it before the process dies; one left by an uncatchable death (SIGKILL, power
 // loss) is removed by the next write into its directory once its process is gone.
 #include <string>
+#include <string_view>
 
 namespace texsynth {
 
@@ -11,8 +12,16 @@ namespace texsynth {
 // pick the format from it).
 std::string temporaryPathFor(const std::string& target);
 
+// What marks a temporary's name, and the start of a ScratchDirectory's folder name.
+inline constexpr std::string_view kTemporaryMarker = ".texsynth-tmp-";
+inline constexpr std::string_view kScratchDirectoryPrefix = "texsynth-scratch-";
+
 // True if `fileName` (no directory) is a temporary of an atomic write.
 bool isTemporaryName(const std::string& fileName);
+
+// The file name a temporary stands for ("NAME.EXT" for ".NAME.texsynth-tmp-HOST-PID-N.EXT"), or ""
+// when `fileName` carries no temporary's marker.
+std::string temporaryTargetName(const std::string& fileName);
 
 // Signal-safe registry of the temporaries that exist right now. Their directories are kept too,
 // so that a signal also finds the ones that did not fit the registry (a long animation stages
