@@ -17,6 +17,7 @@
 #include "texsynth/core/atomic_file.h"
 #include "texsynth/core/error.h"
 #include "texsynth/image/window_support.h"
+#include "texsynth/render/view_up.h"
 
 namespace texsynth::cli {
 
@@ -93,6 +94,16 @@ Vec3f parseFloatTriple(const std::string& text, const std::string& flag, bool on
                          "'" + text + "': give three numbers X,Y,Z" + (oneForAll ? " (or one for all three)" : ""));
   return {parseNumber<float>(parts[0], flag, text), parseNumber<float>(parts[1], flag, text),
           parseNumber<float>(parts[2], flag, text)};
+}
+
+Vec3f parseDirection(const std::string& text, const std::string& flag) {
+  const Vec3f direction = parseFloatTriple(text, flag, false);
+  if (!(direction.norm() > 0)) throw ParameterError(flag, "'" + text + "': the direction must not be zero");
+  return direction;
+}
+
+Vec3f viewUp(const std::string& upFlag, const Mesh& mesh) {
+  return upFlag.empty() ? viewUpDirection(mesh) : Vec3f(parseDirection(upFlag, "--up").stableNormalized());
 }
 
 std::pair<int, float> parseAxisPosition(const std::string& text, const std::string& flag, bool openInterval) {

@@ -9,6 +9,7 @@
 
 #include "parameter_sources.h"
 #include "texsynth/core/math.h"
+#include "texsynth/core/mesh.h"
 #include "texsynth/core/progress.h"
 #include "texsynth/eval/metrics.h"
 
@@ -56,6 +57,22 @@ std::pair<float, float> parseFloatPair(const std::string& text, const std::strin
 // "X,Y,Z" (or, with oneForAll, "V" for all three), each a finite number. Throws ParameterError
 // naming `flag` and quoting `text` whole.
 Vec3f parseFloatTriple(const std::string& text, const std::string& flag, bool oneForAll);
+
+// "X,Y,Z": three finite numbers, not all zero (only the direction matters). Throws
+// ParameterError naming `flag`.
+Vec3f parseDirection(const std::string& text, const std::string& flag);
+
+// The up direction of a command's views of `mesh` (RenderOptions::up): --up's direction when
+// `upFlag` (its text) is not empty, else the rule of viewUpDirection (render/view_up.h).
+Vec3f viewUp(const std::string& upFlag, const Mesh& mesh);
+
+// viewUpDirection's rule in --help's words, and the --up of commands whose --up only turns the views.
+inline constexpr const char* kViewUpRule =
+    "automatic: the model stands on the face of its bounding box it touches over the widest area (the convex hull of "
+    "its vertices within 0.75% of the box diagonal from a floor level or leaning up to 3 degrees), if that covers at "
+    "least 10% of the face, else +Y; CGAL's dino comes out +Z up, its pig -Y, the bunny and cow +Y";
+inline const std::string kViewUpHelp =
+    std::string("X,Y,Z: the model's up direction in the views, which orbit around it (default: ") + kViewUpRule + ")";
 
 // "z=0.5" -> (axis 2, 0.5): a plane across a box, for --slice (position in [0, 1]) and --cut
 // (openInterval: in (0, 1)). Throws ParameterError naming `flag`.

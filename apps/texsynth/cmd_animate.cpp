@@ -176,6 +176,7 @@ void runSurfaceAnimation(const CLI::App& parser, const AnimateArgs& args, const 
 
   RenderOptions render;
   render.width = render.height = args.renderSize;
+  render.up = viewUp(args.up, finest);
   Mesh colored = finest;
   colored.attributes.clear();
   SurfaceAnimator animator(setup.analyses, surface, setup.options, animation, *progress);
@@ -316,7 +317,10 @@ Command registerAnimateCommand(CLI::App& app, const GlobalOptions& globals) {
       inputFiles(sub->add_option("--field", args->field, "With --mesh: rotation field orienting the texture"));
   inputFiles(sub->add_option("--sketch", args->sketch, "With --mesh: sketch curves to design the field from"))
       ->excludes(field);
-  sub->add_option("--up", args->up, "With --mesh: X,Y,Z world up (the default field and `downhill`; default 0,1,0)");
+  sub->add_option("--up", args->up,
+                  std::string("With --mesh: X,Y,Z world up (the default field and `downhill`; default 0,1,0), and the "
+                              "rendered model's up (default: ") +
+                      kViewUpRule + ")");
   sub->add_option("--camera", args->camera, "With --mesh: 'fixed' or 'orbit' (one turn over the animation)")
       ->capture_default_str();
   sub->add_option("--render-size", args->renderSize, "With --mesh: pixel size of the rendered frames")

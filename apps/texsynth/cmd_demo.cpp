@@ -31,6 +31,7 @@
 #include "texsynth/io/mesh_io.h"
 #include "texsynth/render/primitives.h"
 #include "texsynth/render/render_mesh.h"
+#include "texsynth/render/view_up.h"
 #include "texsynth/solid/solid_consumers.h"
 #include "texsynth/solid/tile_deform_solid.h"
 
@@ -175,6 +176,7 @@ void runDemo(const DemoArgs& args, const GlobalOptions& globals) {
   if (meshPath.empty()) meshPath = cgalMesh(kDefaultMesh).value_or("");
   bool meshFallback = meshPath.empty();
   Mesh mesh = meshFallback ? makeUvSphereMesh(Vec3f::Zero(), 1.0f, 48, 96) : readMesh(meshPath);
+  render.up = viewUpDirection(mesh);  // for every view of the mesh below (lazy solid, studio cut)
   start = std::chrono::steady_clock::now();
   progress->begin("rendering", 2);
   Image plain = renderViews(mesh, nullptr, views, render);

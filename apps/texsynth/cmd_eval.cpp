@@ -1,6 +1,6 @@
 // texsynth eval EXEMPLAR OUTPUT: coherence, completeness, histogram, periodicity, lattice and
 // sharpness of a result; for a mesh with vertex colors, surface coherence (plain and
-// rotation-invariant) and histogram.
+// rotation-invariant), completeness, flatness and histogram.
 #include <cstdio>
 
 #include "cli_common.h"
@@ -66,8 +66,12 @@ Command registerEvalCommand(CLI::App& app, const GlobalOptions& globals) {
                                  "texture pixel) gets the surface measures: coherence of the patches resampled around "
                                  "sampled vertices along the default surface orientation (exemplar up = world +Y), "
                                  "rotation-invariant coherence (each patch at the best of its 8 rotations and mirrors: "
-                                 "for textures whose orientation on the surface is unknown, such as solids), and the "
-                                 "histogram distance of the vertex colors.");
+                                 "for textures whose orientation on the surface is unknown, such as solids), "
+                                 "completeness (from exemplar patches to their nearest sampled surface patch; with "
+                                 "fewer samples than exemplar patches it stays above 0 even for a perfect copy), "
+                                 "flatness (the share of sampled patches flatter than the exemplar's 10th-percentile "
+                                 "patch, minus 0.1: about 0 for a faithful texture, may dip slightly below; 0.9 for "
+                                 "one color), and the histogram distance of the vertex colors.");
   struct Args {
     std::string exemplar, output;
     MetricOptions options;
@@ -123,14 +127,23 @@ Command registerEvalCommand(CLI::App& app, const GlobalOptions& globals) {
               args->surface.patchSize = args->options.patchSize;
               args->surface.seed = globals.seed;
               const SurfaceQuality q = evaluateMesh(exemplar, args->output, args->surface);
-              report["surface"] = {{"coherence", q.coherence},    {"rotation_invariant", q.rotationInvariant},
-                                   {"histogram", q.histogram},    {"evaluated", q.evaluated},
-                                   {"near_border", q.nearBorder}, {"spacing", q.spacing},
+              report["surface"] = {{"coherence", q.coherence},
+                                   {"rotation_invariant", q.rotationInvariant},
+                                   {"completeness", q.completeness},
+                                   {"flatness", q.flatness},
+                                   {"histogram", q.histogram},
+                                   {"evaluated", q.evaluated},
+                                   {"near_border", q.nearBorder},
+                                   {"spacing", q.spacing},
                                    {"seconds", q.seconds}};
               if (globals.json) return printJson(report);
               std::printf("coherence           %8.3f   (lower is better)\n", q.coherence);
               std::printf("rotation-invariant  %8.3f   (lower is better; each patch at its best rotation or mirror)\n",
                           q.rotationInvariant);
+              std::printf("completeness        %8.3f   (lower is better; exemplar patches to their nearest)\n",
+                          q.completeness);
+              std::printf("flatness            %8.3f   (lower is better; ~0 like the exemplar, 0.9 one color)\n",
+                          q.flatness);
               std::printf("histogram           %8.3f   (lower is better)\n", q.histogram);
               std::printf("vertices            %8d   evaluated (%d near a border left out)\n", q.evaluated,
                           q.nearBorder);

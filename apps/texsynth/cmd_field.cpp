@@ -27,8 +27,11 @@ std::pair<int, float> parseCut(const std::string& text) {
 }
 
 // The glyph render's flags do nothing without --render.
-const std::vector<ModeFlag> kFieldModeFlags = {
-    {"--render-size", {"--render"}}, {"--views", {"--render"}}, {"--glyphs", {"--render"}}, {"--cut", {"--render"}}};
+const std::vector<ModeFlag> kFieldModeFlags = {{"--render-size", {"--render"}},
+                                               {"--views", {"--render"}},
+                                               {"--glyphs", {"--render"}},
+                                               {"--cut", {"--render"}},
+                                               {"--up", {"--render"}}};
 
 }  // namespace
 
@@ -39,7 +42,7 @@ Command registerFieldCommand(CLI::App& app, const GlobalOptions& globals) {
       "texturing §3) on a grid around MESH; write it as a .tsfield file and optionally render it as glyphs.\n"
       "Sketch format: docs/sketch-format.md. Examples: examples/sketches/*.json");
   struct Args {
-    std::string mesh, sketch, output, render, cut = "z=0.5";
+    std::string mesh, sketch, output, render, cut = "z=0.5", up;
     int grid = 24, renderSize = 512, views = 1, glyphs = 14;
     float margin = 0.05f, snap = 0.03f;
     double weight = 100;
@@ -77,6 +80,7 @@ Command registerFieldCommand(CLI::App& app, const GlobalOptions& globals) {
       ->check(integerIn(2, 200));
   sub->add_option("--cut", args->cut, "Cut view: AXIS=FRACTION of the mesh extent (removes the +AXIS side), or none")
       ->capture_default_str();
+  sub->add_option("--up", args->up, "With --render: " + kViewUpHelp);
 
   const ParameterSources sources = {
       {"shortestCells", fromFlag("--grid")},   {"margin", fromFlag("--margin")},
@@ -112,6 +116,7 @@ Command registerFieldCommand(CLI::App& app, const GlobalOptions& globals) {
                 throw ParameterError("--views", "0 views and --cut none render nothing");
               renderOptions.render.width = renderOptions.render.height = args->renderSize;
               renderOptions.glyphsAcross = args->glyphs;
+              if (!args->up.empty()) parseDirection(args->up, "--up");
               renderOptions.views.clear();
               for (int v = 0; v < args->views; ++v) renderOptions.views.push_back({30.0f + 90.0f * v, 20.0f});
               requireMemory(renderMemoryBytes(renderOptions.render, args->views + (axis >= 0 ? 1 : 0)), "--render-size",
@@ -119,6 +124,7 @@ Command registerFieldCommand(CLI::App& app, const GlobalOptions& globals) {
             }
 
             Mesh mesh = readMesh(args->mesh);
+            if (!args->render.empty()) renderOptions.render.up = viewUp(args->up, mesh);
             Sketch sketch = readSketch(args->sketch);
             auto progress = makeProgress(globals);
             FieldDesign design = designField(mesh, sketch, options, *progress, args->sketch);

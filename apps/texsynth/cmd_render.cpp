@@ -21,7 +21,7 @@ Command registerRenderCommand(CLI::App& app, const GlobalOptions& globals) {
                                  "automatically), or a volume or gradient solid (.tsgs; slices normal to x, y and z), "
                                  "to an image");
   struct Args {
-    std::string input, output, size = "768";
+    std::string input, output, size = "768", up;
     float yaw = 30, pitch = 20;
     int views = 1, supersample = 2;
   };
@@ -32,7 +32,7 @@ Command registerRenderCommand(CLI::App& app, const GlobalOptions& globals) {
       ->required();
   outputFiles(sub->add_option("-o,--output", args->output, "Output image (.png .jpg .exr ...)"))->required();
   sub->add_option("--size", args->size, "Image size of one view, WxH or N")->capture_default_str();
-  sub->add_option("--yaw", args->yaw, "Camera yaw around the vertical axis, degrees")
+  sub->add_option("--yaw", args->yaw, "Camera yaw around the model's up axis (--up), degrees")
       ->capture_default_str()
       ->check(finiteIn(-360, 360));
   sub->add_option("--pitch", args->pitch, "Camera elevation, degrees")->capture_default_str()->check(finiteIn(-90, 90));
@@ -42,17 +42,17 @@ Command registerRenderCommand(CLI::App& app, const GlobalOptions& globals) {
   sub->add_option("--supersample", args->supersample, "Samples per pixel side (anti-aliasing)")
       ->capture_default_str()
       ->check(integerIn(1, 16));
+  sub->add_option("--up", args->up, kViewUpHelp);
   // The camera's flags do nothing for a volume's slice montage.
-  const std::vector<ModeFlag> meshOnly = {{"--size", {"meshes"}},
-                                          {"--yaw", {"meshes"}},
-                                          {"--pitch", {"meshes"}},
-                                          {"--views", {"meshes"}},
-                                          {"--supersample", {"meshes"}}};
+  const std::vector<ModeFlag> meshOnly = {{"--size", {"meshes"}},        {"--yaw", {"meshes"}},
+                                          {"--pitch", {"meshes"}},       {"--views", {"meshes"}},
+                                          {"--supersample", {"meshes"}}, {"--up", {"meshes"}}};
   const ParameterSources sources = {{"width", fromFlag("--size")},
                                     {"height", fromFlag("--size")},
                                     {"supersample", fromFlag("--supersample")},
                                     {"yawDegrees", fromFlag("--yaw")},
                                     {"pitchDegrees", fromFlag("--pitch")},
+                                    {"up", fromFlag("--up")},
                                     {"mesh", fromFile(args->input)},
                                     {"bounds", fromFile(args->input)},
                                     {"box", fromFile(args->input)},
@@ -79,8 +79,10 @@ Command registerRenderCommand(CLI::App& app, const GlobalOptions& globals) {
                 options.yawDegrees = args->yaw;
                 options.pitchDegrees = args->pitch;
                 options.supersample = args->supersample;
+                if (!args->up.empty()) parseDirection(args->up, "--up");  // a typo costs nothing
                 requireMemory(renderMemoryBytes(options, args->views), "--size", "the rendered views");
                 Mesh mesh = readMesh(args->input);
+                options.up = viewUp(args->up, mesh);
                 std::vector<std::pair<float, float>> views;
                 for (int v = 0; v < args->views; ++v) views.push_back({args->yaw + 90.0f * v, args->pitch});
                 picture = renderViews(mesh, nullptr, views, options);

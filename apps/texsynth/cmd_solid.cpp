@@ -22,6 +22,7 @@
 #include "texsynth/io/volume_io.h"
 #include "texsynth/render/glyph_mesh.h"
 #include "texsynth/render/render_mesh.h"
+#include "texsynth/render/view_up.h"
 #include "texsynth/solid/solid_consumers.h"
 
 namespace texsynth::cli {
@@ -235,8 +236,9 @@ void runSolid(const CLI::App& parser, SolidArgs& args, const GlobalOptions& glob
   const bool gradientFile = fileExtension(args.exemplars.front()) == kGradientSolidExtension;
   rejectFlagsOutsideMode(parser, kSolidModeFlags, gradientFile ? "gradient-file" : args.method,
                          gradientFile ? "with a gradient solid (.tsgs)" : "with --method " + args.method);
-  rejectFlagsOutsideMode(parser, {{"--render-size", {"--render"}}, {"--views", {"--render"}}},
+  rejectFlagsOutsideMode(parser, {{"--render-size", {"--render"}}, {"--views", {"--render"}}, {"--up", {"--render"}}},
                          args.render.empty() ? "" : "--render", "without --render");
+  if (!args.up.empty()) parseDirection(args.up, "--up");
   rejectFlagsOutsideMode(parser, {{"--shell", {"--inner"}}}, args.inner.empty() ? "" : "--inner", "without --inner");
   rejectFlagsOutsideMode(parser, {{"--grid-cell", {"--dual-grid"}}}, args.dualGrid ? "--dual-grid" : "",
                          "with --no-dual-grid");
@@ -322,6 +324,7 @@ void runSolid(const CLI::App& parser, SolidArgs& args, const GlobalOptions& glob
   if (!args.render.empty()) {
     RenderOptions options;
     options.width = options.height = args.renderSize;
+    options.up = viewUp(args.up, mesh);
     std::vector<std::pair<float, float>> views;
     for (int v = 0; v < args.views; ++v) views.push_back({30.0f + 90.0f * v, 20.0f});
     SurfaceColorFunction colorAt = surfaceColorFunction(*solid);
@@ -336,7 +339,8 @@ void runSolid(const CLI::App& parser, SolidArgs& args, const GlobalOptions& glob
       const auto [axis, fraction] = *cut;
       const MeshCut opened = cutOpenMesh(coloredCopy(mesh, options.defaultColor), axis, fraction,
                                          box.size().maxCoeff() / 512.0f, options.defaultColor);
-      image = sideBySide({image, renderViews(opened.mesh, &colorAt, {cutViewAngles(axis)}, options)});
+      image = sideBySide(
+          {image, renderViews(opened.mesh, &colorAt, {anglesAboutUp(options.up, cutViewAngles(axis))}, options)});
     }
     writeImage(args.render, image);
     report["outputs"].push_back({{"file", args.render}, {"seconds", lap()}});
@@ -409,6 +413,7 @@ Command registerSolidCommand(CLI::App& app, const GlobalOptions& globals) {
   sub->add_option("--views", args->views, "Rendered views side by side, 90 degrees apart")
       ->capture_default_str()
       ->check(integerIn(1, 4));
+  sub->add_option("--up", args->up, "With --render: " + kViewUpHelp);
   sub->add_option("--tiles", args->tiles, "Exemplar tiles across the longest side of the box (texture scale)")
       ->capture_default_str()
       ->check(finiteIn(0.01, 1000));

@@ -146,6 +146,15 @@ void runSurface(const CLI::App& parser, const SurfaceArgs& args, const GlobalOpt
   }
   report["first_level"] = synthesis.firstLevel;
   report["steps"] = historyJson(synthesis.history);
+  // Per refined level: the start's and the E+M result's flatness and histogram, and which was kept.
+  report["refinement"] = json::array();
+  for (const SurfaceRefinement& r : synthesis.levels)
+    report["refinement"].push_back({{"level", r.level},
+                                    {"start_flatness", r.startFlatness},
+                                    {"start_histogram", r.startHistogram},
+                                    {"refined_flatness", r.refinedFlatness},
+                                    {"refined_histogram", r.refinedHistogram},
+                                    {"kept", r.kept}});
   const std::string summary =
       "synthesized " + std::to_string(result.colored.vertexCount()) + " vertices in " + seconds(secondsSince(start)) +
       " (hierarchy " + seconds(report["hierarchy_seconds"].get<double>()) + (setup.hierarchyCached ? ", cached" : "") +
@@ -185,9 +194,9 @@ Command registerSurfaceCommand(CLI::App& app, const GlobalOptions& globals) {
       "default a smooth field following world +Y (--up to choose another), or the rotation field of --field / "
       "--sketch (`texsynth field`).\n"
       "  Outputs: -o the retiled mesh with vertex colors (.ply .obj .glb .gltf, as often as needed); --render a "
-      "picture; --bake a texture map in the UV layout of --mesh (which must have UVs); --coords each vertex's "
-      "exemplar coordinates, which --apply-coords later re-applies to another map of the same material (normal, "
-      "roughness ...) without synthesizing.\n"
+      "picture (views around the model's up: --up if given, else automatic, see --up); --bake a texture map in the UV "
+      "layout of --mesh (which must have UVs); --coords each vertex's exemplar coordinates, which --apply-coords "
+      "later re-applies to another map of the same material (normal, roughness ...) without synthesizing.\n"
       "  Caching: the exemplar analysis and the retiled mesh hierarchy are cached (the directory `texsynth --help` "
       "names): the first run on a mesh spends seconds retiling it, later runs at the same --vertices and --levels "
       "start synthesizing at once.\n"
@@ -221,8 +230,9 @@ Command registerSurfaceCommand(CLI::App& app, const GlobalOptions& globals) {
                              "`texsynth field`; instead of --field"))
       ->excludes(field);
   sub->add_option("--up", args->up,
-                  "X,Y,Z: the world direction the default smooth field follows, i.e. the exemplar's up (default "
-                  "0,1,0); not with --field or --sketch");
+                  std::string("X,Y,Z: the world direction the default smooth field follows, i.e. the exemplar's up "
+                              "(default 0,1,0), and the up of --render's views (default: ") +
+                      kViewUpRule + "); not with --field or --sketch");
   outputFiles(sub->add_option("--render", args->render, "Render the result to this image"));
   sub->add_option("--render-size", args->renderSize, "With --render: pixel size of each view")
       ->capture_default_str()

@@ -12,6 +12,7 @@
 #include "texsynth/geometry/surface_projector.h"
 #include "texsynth/io/image_io.h"
 #include "texsynth/render/glyph_mesh.h"
+#include "texsynth/render/view_up.h"
 #include "texsynth/solid/solid_factory.h"
 
 namespace texsynth::cli {
@@ -99,7 +100,7 @@ json demoLazySolid(const Mesh& mesh, const Image& exemplar, const std::string& e
   before = solid.stats();
   const MeshCut opened = cutOpenMesh(coloredCopy(mesh, render.defaultColor), kCutAxis, kCutFraction,
                                      box.size().maxCoeff() / 512.0f, render.defaultColor);
-  const Image cut = renderViews(opened.mesh, &colorAt, {cutViewAngles(kCutAxis)}, render);
+  const Image cut = renderViews(opened.mesh, &colorAt, {anglesAboutUp(render.up, cutViewAngles(kCutAxis))}, render);
   section["cut_seconds"] = secondsSince(start);
   section["cut_levels"] = levelsJson(solid, before);
   writeImage(out("lazy_solid.png"), sideBySide({picture, cut}));

@@ -17,6 +17,7 @@
 #include "texsynth/geometry/mesh_cut.h"
 #include "texsynth/io/image_io.h"
 #include "texsynth/io/mesh_io.h"
+#include "texsynth/render/view_up.h"
 #include "texsynth/studio/event_hub.h"
 #include "texsynth/studio/studio_server.h"
 
@@ -94,7 +95,7 @@ json demoStudio(const Mesh& mesh, const Image& exemplar, const std::string& cach
   const Mesh opened = parseGltf(call(client, "GET", cut["url"])["bytes"].get<std::string>(), "the cut");
   section["cut_seconds"] = secondsSince(started);
   section["cut_vertices"] = opened.vertexCount();
-  writeImage(out("studio_cut.png"), renderViews(opened, nullptr, {cutViewAngles(0)}, render));
+  writeImage(out("studio_cut.png"), renderViews(opened, nullptr, {anglesAboutUp(render.up, cutViewAngles(0))}, render));
   server.stop();
   return section;
 }

@@ -11,6 +11,7 @@
 #include "texsynth/geometry/mesh_hierarchy_cache.h"
 #include "texsynth/io/image_io.h"
 #include "texsynth/render/render_mesh.h"
+#include "texsynth/render/view_up.h"
 #include "texsynth/surface/surface_quality.h"
 #include "texsynth/surface/surface_synthesis.h"
 
@@ -20,8 +21,9 @@ using nlohmann::json;
 
 namespace {
 
-// A third of `texsynth surface`'s default: seconds on 2 cores, the bunny still a few exemplars across.
-constexpr int kDemoVertices = 16000;
+// `texsynth surface`'s default: a few seconds on 2 cores, and the weave of the demo's burlap (about 16
+// pixels a repeat) stays visible in the 384-pixel views (at 16000 vertices it blurs into blotches).
+constexpr int kDemoVertices = 48000;
 
 }  // namespace
 
@@ -63,9 +65,16 @@ json demoSurfaceSynthesis(const Mesh& mesh, const std::string& meshName, const I
   section["coherence"] = quality.coherence;
   section["rotation_invariant_coherence"] = quality.rotationInvariant;
   section["histogram"] = quality.histogram;
+  section["flatness"] = quality.flatness;
+  section["completeness"] = quality.completeness;
+  int kept = 0;
+  for (const SurfaceRefinement& refinement : result.levels) kept += refinement.kept;
+  section["refined_levels_kept"] = kept;
+  section["refined_levels"] = result.levels.size();
 
   RenderOptions render;
   render.width = render.height = 384;
+  render.up = viewUpDirection(mesh);
   writeImage(out("surface_synthesis.png"),
              sideBySide({exemplar, renderViews(colored, nullptr, {{30.0f, 20.0f}, {210.0f, 20.0f}}, render)}, 8));
   return section;
@@ -78,8 +87,12 @@ std::string surfaceMarkdown(const json& surface) {
      << surface["mesh"].get<std::string>() << " --vertices " << surface["requested_vertices"]
      << "`: the mesh retiled by CGAL into a hierarchy of " << surface["vertices"].dump()
      << " vertices, oriented by a smooth tangent field (the exemplar upright), and every vertex "
-        "given a color by texture optimization with the discrete solver that 2D `optimize` uses "
-        "(neighborhoods resampled on the surface, 17x17 then 9x9 at every level).\n\n";
+        "a continuous exemplar coordinate: coarse to fine, k-coherence synthesis as 2D `parallel` "
+        "(random coherent patches, upsampling through the parent triangles, jitter, correction of "
+        "every vertex's 5x5 flattened neighbourhood), then the discrete solver that 2D `optimize` "
+        "uses (neighborhoods resampled on the surface, 17x17 then 9x9), whose result is kept only "
+        "where it is no flatter and no farther from the exemplar's histogram (kept at "
+     << surface["refined_levels_kept"] << " of " << surface["refined_levels"] << " levels here).\n\n";
   md << "| stage | seconds |\n|---|---:|\n";
   md << "| mesh hierarchy (cached for the next run) | " << fixed3(surface["hierarchy_seconds"]) << " |\n";
   md << "| tangent field and resampled neighborhoods | " << fixed3(surface["prepare_seconds"]) << " |\n";
@@ -88,7 +101,10 @@ std::string surfaceMarkdown(const json& surface) {
   md << "Surface coherence (each vertex's resampled 7x7 neighborhood against its nearest exemplar patch, "
         "`texsynth eval` units): "
      << fixed3(surface["coherence"]) << " (" << fixed3(surface["rotation_invariant_coherence"])
-     << " with the best of 8 rotations and mirrors); histogram distance " << fixed3(surface["histogram"]) << ".\n\n";
+     << " with the best of 8 rotations and mirrors); completeness " << fixed3(surface["completeness"])
+     << "; histogram distance " << fixed3(surface["histogram"]) << "; flatness " << fixed3(surface["flatness"])
+     << " (the share of vertices flatter than the exemplar's flattest tenth of patches, minus 0.10: about 0 "
+        "when the texture covers the whole model).\n\n";
   return md.str();
 }
 

@@ -15,7 +15,7 @@ namespace texsynth::cli {
 
 struct SolidArgs {
   std::vector<std::string> exemplars;  // EXEMPLAR [YZ_EXEMPLAR ZX_EXEMPLAR]
-  std::string method = "tile-deform", mesh, render, stats, stack = "xyz";
+  std::string method = "tile-deform", mesh, render, stats, stack = "xyz", up;
   std::vector<std::string> outputs, slices;
   int resolution = 128, renderSize = 768, views = 2, surface = 0;
   float tiles = 2.0f, sharpness = 4.0f;

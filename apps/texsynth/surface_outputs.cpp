@@ -1,6 +1,7 @@
 // The files `texsynth surface` writes: colored meshes, the coordinates file, a render, a baked texture.
 #include <chrono>
 
+#include "cli_common.h"
 #include "surface_args.h"
 #include "texsynth/core/memory_budget.h"
 #include "texsynth/io/image_io.h"
@@ -19,7 +20,7 @@ RenderOptions renderOptions(const SurfaceArgs& args) {
   return options;
 }
 
-// Views evenly around the model, each from 20 degrees above.
+// Views evenly around the model's up, each from 20 degrees above.
 std::vector<std::pair<float, float>> renderAngles(int views) {
   std::vector<std::pair<float, float>> angles;
   for (int v = 0; v < views; ++v) angles.push_back({30.0f + 360.0f * float(v) / float(views), 20.0f});
@@ -60,7 +61,9 @@ nlohmann::json writeSurfaceOutputs(const SurfaceArgs& args, const SurfaceResult&
     progress.advance(1);
   }
   if (!args.render.empty()) {
-    writeImage(args.render, renderViews(result.colored, nullptr, renderAngles(args.views), renderOptions(args)));
+    RenderOptions options = renderOptions(args);
+    options.up = viewUp(args.up, result.colored);
+    writeImage(args.render, renderViews(result.colored, nullptr, renderAngles(args.views), options));
     done(args.render);
     progress.advance(1);
   }

@@ -21,12 +21,6 @@ namespace texsynth::cli {
 
 using nlohmann::json;
 
-Vec3f parseDirection(const std::string& text, const std::string& flag) {
-  const Vec3f direction = parseFloatTriple(text, flag, false);
-  if (!(direction.norm() > 0)) throw ParameterError(flag, "'" + text + "': the direction must not be zero");
-  return direction;
-}
-
 json historyJson(const std::vector<OptimizationIteration>& history) {
   json steps = json::array();
   for (const OptimizationIteration& h : history)

@@ -44,10 +44,6 @@ inline double surfaceSynthesisBytes(int vertices) {
   return 64.0 * 1024 * 1024 + double(vertices) * 4096.0;
 }
 
-// "X,Y,Z": three finite numbers, not all zero (only the direction matters). Throws
-// ParameterError naming `flag`.
-Vec3f parseDirection(const std::string& text, const std::string& flag);
-
 // The mesh side's errors name the mesh file, not the library's "mesh".
 template <typename Work>
 auto namingMesh(const std::string& path, Work work) {

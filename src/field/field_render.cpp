@@ -7,6 +7,7 @@
 #include "texsynth/core/error.h"
 #include "texsynth/geometry/mesh_cut.h"
 #include "texsynth/render/glyph_mesh.h"
+#include "texsynth/render/view_up.h"
 
 namespace texsynth {
 
@@ -94,7 +95,7 @@ Image renderFieldGlyphs(const Mesh& mesh, const RotationField& field, const std:
       appendPolyline(cut, piece, 1.6f * radius, kCurveColor);
     }
     RenderOptions view = options.render;
-    std::tie(view.yawDegrees, view.pitchDegrees) = cutViewAngles(axis);
+    std::tie(view.yawDegrees, view.pitchDegrees) = anglesAboutUp(view.up, cutViewAngles(axis));
     if (!cut.triangles.empty()) views.push_back(renderMesh(cut, view));
   }
   return sideBySide(views);

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "texsynth/render/view_up.h"
+
 namespace texsynth::render_detail {
 
 namespace {
@@ -33,10 +35,13 @@ BoundingSphere boundingSphere(const Mesh& mesh) {
 
 Camera fitCamera(const Mesh& mesh, const RenderOptions& options, int sampleWidth, int sampleHeight) {
   BoundingSphere sphere = boundingSphere(mesh);
-  // Camera-to-world rotation: orbit about +Y by yaw, then raise by pitch (rotation about -X).
+  // Camera-to-world rotation: orbit about +Y by yaw, then raise by pitch (rotation about -X),
+  // in the frame that takes +Y to the model's up (the identity for +Y).
   Mat3f cameraToWorld = (Eigen::AngleAxisf(radians(options.yawDegrees), Vec3f::UnitY()) *
                          Eigen::AngleAxisf(-radians(options.pitchDegrees), Vec3f::UnitX()))
                             .toRotationMatrix();
+  const Mat3f frame = upFrame(options.up);
+  if (frame != Mat3f::Identity()) cameraToWorld = frame * cameraToWorld;
   float halfFov = 0.5f * radians(options.fovDegrees);
   // The sphere seen from distance d spans a half-angle asin(r / d); pick d so that angle
   // leaves `margin` (relative to the radius) inside the field of view.

@@ -22,7 +22,7 @@ struct Camera {
   Vec3f viewToWorldDirection(const Vec3f& v) const { return worldToView.transpose() * v; }
 };
 
-// A camera orbiting the mesh's bounding sphere at (yaw, pitch) from the options, far enough
+// A camera orbiting the mesh's bounding sphere at (yaw, pitch) about options.up, far enough
 // that the whole sphere (plus margin) is visible across the smaller side of a
 // sampleWidth x sampleHeight image.
 Camera fitCamera(const Mesh& mesh, const RenderOptions& options, int sampleWidth, int sampleHeight);

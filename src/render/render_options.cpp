@@ -32,6 +32,8 @@ void validateRenderOptions(const RenderOptions& options) {
                                             std::to_string(options.supersample));
   requireFinite("yawDegrees", options.yawDegrees);
   requireFinite("pitchDegrees", options.pitchDegrees);
+  if (!options.up.allFinite() || !(options.up.cwiseAbs().maxCoeff() > 0))
+    throw ParameterError("up", "must be a finite non-zero vector");
   if (!(options.fovDegrees > 0 && options.fovDegrees < 170))
     throw ParameterError("fovDegrees", "must be in (0, 170), got " + std::to_string(options.fovDegrees));
   if (!(options.margin >= 0 && std::isfinite(options.margin)))

@@ -25,7 +25,7 @@ PreparedSurface prepareSurface(MeshHierarchy hierarchy, const SurfaceOrientation
   progress.begin("orient and resample the surface", std::int64_t(hierarchy.levels.size()));
   for (std::size_t l = 0; l < hierarchy.levels.size(); ++l) {
     const MeshLevel& level = hierarchy.levels[l];
-    PreparedSurfaceLevel preparedLevel{MeshTopology(level.mesh, "mesh level " + std::to_string(l + 1)), {}, {}};
+    PreparedSurfaceLevel preparedLevel{MeshTopology(level.mesh, "mesh level " + std::to_string(l + 1)), {}, {}, {}};
     // The field gives the exemplar's up direction b; the neighborhoods' x axis is t = b x n, so
     // that b = n x t as surface_neighborhoods.h lays cells out (exemplar rows across the field).
     preparedLevel.tangents = orientation.field
@@ -38,6 +38,8 @@ PreparedSurface prepareSurface(MeshHierarchy hierarchy, const SurfaceOrientation
       preparedLevel.neighborhoods.push_back(
           resampleNeighborhoods(level.mesh, preparedLevel.topology, preparedLevel.tangents, level.spacing, n, centres));
     }
+    preparedLevel.stencil =
+        buildSurfaceStencil(level.mesh, preparedLevel.topology, preparedLevel.tangents, level.spacing, kStencilSize);
     prepared.levels.push_back(std::move(preparedLevel));
     progress.advance(1);
   }

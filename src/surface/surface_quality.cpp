@@ -1,5 +1,6 @@
 // Surface texture quality (surface_quality.h): vertex patches resampled on the mesh and matched
-// exactly against the exemplar's patches by eval's PatchIndex, as `texsynth eval` does on images.
+// exactly against the exemplar's patches by eval's PatchIndex, as `texsynth eval` does on images;
+// flatness and completeness in surface_patch_statistics.cpp.
 #include "texsynth/surface/surface_quality.h"
 
 #include <algorithm>
@@ -11,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "surface_patch_statistics.h"
 #include "texsynth/core/error.h"
 #include "texsynth/core/random.h"
 #include "texsynth/core/timing.h"
@@ -146,8 +148,12 @@ SurfaceQuality evaluateSurface(const Image& exemplar, const Mesh& coloredMesh, s
     for (int c = 0; c < 3; ++c) colors[3 * v + std::size_t(c)] = mesh.colors[v][c] * 255.0f;
 
   // Per batch: the exact nearest patch of every plain patch, then of its 7 other symmetries,
-  // each looked for only below the plain distance (which prunes most of their search).
+  // each looked for only below the plain distance (which prunes most of their search); the
+  // plain patches' deviations (flatness) and their exact nearest to the exemplar's (completeness).
   const PatchIndex index(exemplar255, size);
+  const double flatThreshold = surface_detail::flatnessThreshold(exemplar255, size);
+  surface_detail::CompletenessSearch completeness(exemplar255, size, options.seed);
+  std::size_t flat = 0;
   const std::size_t values = std::size_t(size) * size * 3;
   std::vector<float> plain, turned;
   std::vector<double> limits;
@@ -159,6 +165,7 @@ SurfaceQuality evaluateSurface(const Image& exemplar, const Mesh& coloredMesh, s
     for (std::size_t i = 0; i < count; ++i) {
       const std::span<float> patch(&plain[i * values], values);
       patches.resample(first + i, colors, 3, patch);
+      if (surface_detail::patchDeviation(patch.data(), size * size) < flatThreshold) ++flat;
       for (int k = 1; k < kTransforms; ++k) {
         float* out = &turned[(i * (kTransforms - 1) + std::size_t(k - 1)) * values];
         for (int y = 0; y < size; ++y)
@@ -167,6 +174,7 @@ SurfaceQuality evaluateSurface(const Image& exemplar, const Mesh& coloredMesh, s
       }
     }
     const std::vector<PatchMatch> plainMatches = index.nearestVectors(plain, count);
+    completeness.add(plain, count);
     limits.resize(count * (kTransforms - 1));
     for (std::size_t i = 0; i < limits.size(); ++i) limits[i] = plainMatches[i / (kTransforms - 1)].meanSquared;
     const std::vector<PatchMatch> turnedMatches = index.nearestVectors(turned, limits.size(), limits);
@@ -180,6 +188,8 @@ SurfaceQuality evaluateSurface(const Image& exemplar, const Mesh& coloredMesh, s
   }
   quality.coherence = std::sqrt(plainSum / double(centres.size()));
   quality.rotationInvariant = std::sqrt(invariantSum / double(centres.size()));
+  quality.flatness = double(flat) / double(centres.size()) - 0.1;
+  quality.completeness = completeness.result();
 
   Image vertexColors(int(mesh.vertexCount()), 1, 3);
   vertexColors.pixels = std::move(colors);

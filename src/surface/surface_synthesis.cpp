@@ -12,6 +12,8 @@
 #include "texsynth/core/timing.h"
 #include "texsynth/image/discrete_steps.h"
 #include "texsynth/surface/surface_domain.h"
+#include "texsynth/surface/surface_level_measures.h"
+#include "texsynth/surface/surface_parallel.h"
 
 namespace texsynth {
 namespace {
@@ -40,99 +42,77 @@ void validate(std::span<const ExemplarAnalysis> analyses, const PreparedSurface&
   }
 }
 
-// The coarsest level's start: random coherent patches. Every vertex copies the exemplar around
-// a random pixel of its nearest active centre (of the first neighborhood size), at its flattened
-// offset from that centre: pieces of exemplar structure about a stride across, where random
-// pixels make the first matches pick the exemplar's flattest regions (as in 2D).
-std::vector<std::int32_t> startSources(const SurfaceNeighborhoods& neighborhoods, const ExemplarWindow& window,
-                                       std::uint64_t seed, int level) {
-  auto randomPixel = [&](std::uint64_t element) {
-    const std::uint64_t key = hashKey(seed, element, std::uint64_t(level), 0x57a7);
-    const auto x = std::int32_t(uniformBelow(key, std::uint32_t(window.exemplarWidth)));
-    const auto y = std::int32_t(uniformBelow(mix64(key), std::uint32_t(window.exemplarHeight)));
-    return y * window.exemplarWidth + x;
-  };
-  std::vector<std::int32_t> sources(neighborhoods.vertexCount());
-  parallelForChunks(0, std::int64_t(sources.size()), 4096, [&](std::int64_t begin, std::int64_t end) {
-    for (std::int64_t v = begin; v < end; ++v) {
-      const CoveringEntry* nearest = nullptr;
-      for (const CoveringEntry& entry : neighborhoods.coveringOf(std::size_t(v)))
-        if (!nearest ||
-            entry.dx * entry.dx + entry.dy * entry.dy < nearest->dx * nearest->dx + nearest->dy * nearest->dy)
-          nearest = &entry;
-      sources[std::size_t(v)] =
-          nearest
-              ? window.shifted(randomPixel(std::uint64_t(neighborhoods.centres[std::size_t(nearest->neighborhood)])),
-                               nearest->dx, nearest->dy)
-              : randomPixel(std::uint64_t(v) | (1ull << 40));
-    }
-  });
-  return sources;
-}
-
-// A finer level's start: each vertex continues the source of the nearest corner u of its parent
-// triangle, moved by its offset from u in u's tangent frame (fine cells, h of the fine level),
-// as 2D upsampling moves a child by its offset in the parent's block.
-std::vector<std::int32_t> upsampleSources(const MeshLevel& coarse, const PreparedSurfaceLevel& coarsePrepared,
-                                          const MeshLevel& fine, std::span<const std::int32_t> coarseSources,
-                                          const ExemplarWindow& fineWindow) {
-  std::vector<std::int32_t> sources(fine.mesh.vertexCount());
-  const float perCell = 1.0f / fine.spacing;
-  parallelForChunks(0, std::int64_t(sources.size()), 4096, [&](std::int64_t begin, std::int64_t end) {
-    for (std::int64_t v = begin; v < end; ++v) {
-      const Vec3i& triangle = coarse.mesh.triangles[std::size_t(fine.parentTriangle[std::size_t(v)])];
-      const Vec3f& weights = fine.parentBarycentric[std::size_t(v)];
-      int corner = 0;
-      for (int k = 1; k < 3; ++k)
-        if (weights[k] > weights[corner]) corner = k;
-      const int u = triangle[corner];
-      const Vec3f& t = coarsePrepared.tangents[std::size_t(u)];
-      const Vec3f b = coarse.mesh.normals[std::size_t(u)].cross(t);
-      const Vec3f d = fine.mesh.positions[std::size_t(v)] - coarse.mesh.positions[std::size_t(u)];
-      sources[std::size_t(v)] =
-          fineWindow.shifted(coarseSources[std::size_t(u)], d.dot(t) * perCell, -d.dot(b) * perCell);
-    }
-  });
-  return sources;
-}
-
 }  // namespace
 
 SurfaceSynthesisResult synthesizeSurface(std::span<const ExemplarAnalysis> analyses, const PreparedSurface& surface,
-                                         const TextureOptimizationOptions& options, Progress& progress) {
+                                         const TextureOptimizationOptions& options, Progress& progress,
+                                         const SurfaceStartOptions& startOptions) {
   validate(analyses, surface, options);
   const auto start = std::chrono::steady_clock::now();
   const ExemplarAnalysis& base = analyses.back();
   const int levels = int(surface.levels.size());
   const int largest = *std::max_element(options.neighborhoodSizes.begin(), options.neighborhoodSizes.end());
   SurfaceSynthesisResult result;
-  // As in 2D: start at the first level whose largest neighborhood fits inside the exemplar.
+  // The E+M refinement, as in 2D, only at levels whose largest neighborhood fits inside the
+  // exemplar (there a tiled copy of it is a zero-energy optimum).
   int first = 0;
   while (first + 1 < levels && !ExemplarWindow(base, first, largest).bounded) ++first;
   result.firstLevel = first;
-
-  const int steps = int(options.neighborhoodSizes.size()) * (options.maxIterations + 1);
-  std::vector<std::int32_t> sources;
-  for (int level = first; level < levels; ++level) {
+  SurfaceParallelOptions parallel = startOptions.parallel;
+  parallel.seed = options.seed;
+  const int refineSteps = int(options.neighborhoodSizes.size()) * (options.maxIterations + 1);
+  std::vector<Vec2f> coordinates;
+  for (int level = 0; level < levels; ++level) {
     const MeshLevel& mesh = surface.hierarchy.levels[std::size_t(level)];
     const PreparedSurfaceLevel& prepared = surface.levels[std::size_t(level)];
+    const int passes = level == 0 ? std::max(parallel.passes, parallel.startPasses) : parallel.passes;
+    const bool refine = startOptions.refine && level >= first;
     progress.begin("surface level " + std::to_string(level + 1) + "/" + std::to_string(levels) + " (" +
                        std::to_string(mesh.mesh.vertexCount()) + " vertices)",
-                   steps);
-    const ExemplarWindow window(base, level, options.neighborhoodSizes[0]);
-    if (level == first)
-      sources = startSources(prepared.neighborhoods[0], window, options.seed, level);
-    else
-      sources = upsampleSources(surface.hierarchy.levels[std::size_t(level - 1)],
-                                surface.levels[std::size_t(level - 1)], mesh, sources, window);
-    for (std::size_t scale = 0; scale < options.neighborhoodSizes.size(); ++scale) {
-      const detail::SurfaceDomain domain{prepared.neighborhoods[scale], base.channels()};
-      detail::optimizeDiscreteScale(domain, analyses, level, scale, options, sources, result.history, progress);
+                   passes + (refine ? refineSteps : 0));
+    const int h = base.levels[std::size_t(level)].spacing;
+    if (level == 0) {
+      coordinates = patchSurfaceCoordinates(prepared.neighborhoods[0], options.seed, level, h, base.width, base.height);
+    } else {
+      const MeshLevel& coarse = surface.hierarchy.levels[std::size_t(level - 1)];
+      coordinates = upsampleSurfaceCoordinates(coarse, surface.levels[std::size_t(level - 1)].tangents, mesh,
+                                               coordinates, float(h) / mesh.spacing, base.width, base.height);
+      jitterSurfaceCoordinates(coordinates, level, h, parallel.jitter, options.seed, base.width, base.height);
+    }
+    for (int pass = 0; pass < passes; ++pass) {
+      correctSurfaceCoordinates(prepared.stencil, base, level, parallel, coordinates);
+      progress.advance(1);
+    }
+    if (refine) {
+      // The discrete optimization on top; its result replaces the start only where it is no
+      // flatter and its histogram no farther from the exemplar's (on flat-background exemplars
+      // it can wash the features out).
+      std::vector<std::int32_t> sources = pixelsOfCoordinates(coordinates, base.width, base.height);
+      std::vector<OptimizationIteration> history;
+      for (std::size_t scale = 0; scale < options.neighborhoodSizes.size(); ++scale) {
+        const detail::SurfaceDomain domain{prepared.neighborhoods[scale], base.channels()};
+        detail::optimizeDiscreteScale(domain, analyses, level, scale, options, sources, history, progress);
+      }
+      std::vector<Vec2f> refined = coordinatesOfPixels(sources, base.width);
+      const ExemplarLevel& stack = base.levels[std::size_t(level)];
+      const SurfaceLevelMeasures before = measureSurfaceLevel(prepared.stencil, stack, coordinates);
+      const SurfaceLevelMeasures after = measureSurfaceLevel(prepared.stencil, stack, refined);
+      const bool kept = after.flatness <= before.flatness && after.histogram <= before.histogram;
+      result.levels.push_back({level, before.flatness, before.histogram, after.flatness, after.histogram, kept});
+      if (kept) coordinates = std::move(refined);
+      result.history.insert(result.history.end(), history.begin(), history.end());
     }
     progress.end();
   }
-  result.colors = colorsOfSources(base.levels.back().image, sources);
-  result.sources = std::move(sources);
+  result.sources = pixelsOfCoordinates(coordinates, base.width, base.height);
+  const std::vector<float> colors = colorsAtCoordinates(base.levels.back().image, coordinates);
+  const int c = base.levels.back().image.channels, color = base.colorChannels;
+  result.colors.resize(coordinates.size());
+  for (std::size_t v = 0; v < coordinates.size(); ++v) {
+    const float* p = colors.data() + v * std::size_t(c);
+    result.colors[v] = color >= 3 ? Vec3f(p[0], p[1], p[2]) : Vec3f::Constant(p[0]);
+  }
+  result.coordinates = std::move(coordinates);
   result.seconds = secondsSince(start);
   return result;
 }

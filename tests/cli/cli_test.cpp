@@ -141,6 +141,28 @@ TEST(Cli, RenderWritesImageAndFailedRenderKeepsOldFile) {
   EXPECT_EQ(readFileBytes(dir.file("view.png")), before);
 }
 
+// Views stand a mesh on the floor it was built on (here a pyramid on z = 0, so +Z is up) unless
+// --up says otherwise; a zero --up is a usage error.
+TEST(Cli, RenderStandsTheMeshUpOrFollowsUp) {
+  test::TempDir dir;
+  Mesh pyramid;
+  pyramid.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}, {0, 0, 3}};
+  pyramid.triangles = {{0, 2, 1}, {0, 3, 2}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}};
+  writeMesh(dir.file("pyramid.ply"), pyramid);
+  auto render = [&](const std::string& name, const std::string& flags) {
+    RunResult r = runTexsynth(
+        "render " + dir.file("pyramid.ply") + " -o " + dir.file(name) + " --size 32 " + flags + " --quiet", dir);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    return readFileBytes(dir.file(name));
+  };
+  const std::string automatic = render("auto.png", ""), plusZ = render("z.png", "--up 0,0,2"),
+                    plusY = render("y.png", "--up 0,1,0");
+  EXPECT_EQ(automatic, plusZ);
+  EXPECT_NE(automatic, plusY);
+  test::expectOneLineError(
+      runTexsynth("render " + dir.file("pyramid.ply") + " -o " + dir.file("v.png") + " --up 0,0,0", dir), 2, "--up");
+}
+
 TEST(Cli, DemoRunsOnDefaultsAndWritesReport) {
   test::TempDir dir;
   RunResult r = runTexsynth("demo -o " + dir.file("demo") + " --quiet", dir);

@@ -5,6 +5,7 @@
 #include "texsynth/core/data_paths.h"
 #include "texsynth/io/mesh_io.h"
 #include "texsynth/render/render_mesh.h"
+#include "texsynth/render/view_up.h"
 
 using namespace texsynth;
 using namespace texsynth::test;
@@ -32,5 +33,18 @@ TEST(RenderRealMesh, BunnyIsWhollyVisibleFromAnyAngle) {
                     isBackground(image, image.width - 1, y, options.background);
     EXPECT_TRUE(borderClear) << "yaw " << yaw << " pitch " << pitch;
     EXPECT_GT(foreground(image, options.background).count, image.width * image.height / 10) << "yaw " << yaw;
+  }
+}
+
+// The view up of CGAL's meshes: each stands on the floor it was modelled on (viewUpDirection).
+TEST(RenderRealMesh, ViewUpStandsCgalMeshesUpright) {
+  const std::pair<const char*, Vec3f> expected[] = {
+      {"dino.off", Vec3f::UnitZ()},     {"pig.off", -Vec3f::UnitY()},    {"cow.off", Vec3f::UnitY()},
+      {"elephant.off", Vec3f::UnitY()}, {"bunny00.off", Vec3f::UnitY()}, {"armadillo.off", Vec3f::UnitY()},
+      {"sphere.off", Vec3f::UnitY()},   {"cube.off", Vec3f::UnitY()},    {"fandisk.off", -Vec3f::UnitY()}};
+  for (const auto& [name, up] : expected) {
+    const auto path = cgalMesh(name);
+    TS_REQUIRE_DATA(path);
+    EXPECT_EQ(viewUpDirection(readMesh(*path)), up) << name;
   }
 }

@@ -1,6 +1,7 @@
 // Surface quality: a coherent copy of the exemplar on a flat retiled plane scores near 0, random
-// exemplar pixels score high, a turned copy is coherent only rotation-invariantly, borders are
-// left out, thread count does not matter, bad input is rejected.
+// exemplar pixels score high, a turned copy is coherent only rotation-invariantly, flatness and
+// completeness tell a copy from a one-color surface (completeness also from part of a copy),
+// borders are left out, thread count does not matter, bad input is rejected.
 #include "texsynth/surface/surface_quality.h"
 
 #include <gtest/gtest.h>
@@ -66,6 +67,25 @@ void colorCoherently(Mesh& mesh, const Image& exemplar, double x0, double y0, bo
   }
 }
 
+// Colors every vertex by the exemplar pixel under it (as colorCoherently, without interpolation):
+// what surface synthesis does, one exemplar pixel per vertex.
+void colorByPixel(Mesh& mesh, const Image& exemplar, double x0, double y0) {
+  const double s = spacingOf(mesh);
+  mesh.colors.clear();
+  for (const Vec3f& p : mesh.positions) {
+    const int x = int(std::floor(x0 + p.x() / s)) % exemplar.width,
+              y = int(std::floor(y0 - p.y() / s)) % exemplar.height;
+    mesh.colors.push_back({exemplar.at(x, y, 0), exemplar.at(x, y, 1), exemplar.at(x, y, 2)});
+  }
+}
+
+// A fine texture: smoothTexture with per-pixel noise of about its own amplitude.
+Image fineTexture(int size) {
+  Image image = smoothTexture(size);
+  for (std::size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] += 0.3f * (uniform01(hashKey(5, i)) - 0.5f);
+  return image;
+}
+
 void colorRandomly(Mesh& mesh, const Image& exemplar) {
   mesh.colors.clear();
   for (std::size_t v = 0; v < mesh.vertexCount(); ++v) {
@@ -73,6 +93,10 @@ void colorRandomly(Mesh& mesh, const Image& exemplar) {
     const int y = int(uniformBelow(hashKey(9, v, 1), std::uint32_t(exemplar.height)));
     mesh.colors.push_back({exemplar.at(x, y, 0), exemplar.at(x, y, 1), exemplar.at(x, y, 2)});
   }
+}
+
+void colorUniformly(Mesh& mesh, Vec3f color) {
+  mesh.colors.assign(mesh.vertexCount(), color);
 }
 
 std::vector<Vec3f> alongX(const Mesh& mesh) {
@@ -130,6 +154,40 @@ TEST_F(SurfaceQualityTest, TurnedCopyIsCoherentOnlyRotationInvariantly) {
   EXPECT_NEAR(turnedTangents.rotationInvariant, q.rotationInvariant, 0.5);
 }
 
+TEST_F(SurfaceQualityTest, FlatnessIsNearZeroForACopyAndHighForOneColor) {
+  Mesh coherent = *plane_, pixels = *plane_, uniform = *plane_, random = *plane_;
+  colorCoherently(coherent, *exemplar_, 12, 52);
+  const Image fine = fineTexture(64);
+  colorByPixel(pixels, fine, 12, 52);
+  colorUniformly(uniform, {0.5f, 0.4f, 0.3f});
+  colorRandomly(random, *exemplar_);
+  const SurfaceQuality copy = evaluateSurface(*exemplar_, coherent, alongX(coherent));
+  // Resampling between vertices blurs a fine texture: the exemplar's patches are resampled too
+  // before they set the threshold, or this would read 0.3.
+  const SurfaceQuality fineCopy = evaluateSurface(fine, pixels, alongX(pixels));
+  const SurfaceQuality flat = evaluateSurface(*exemplar_, uniform, alongX(uniform));
+  const SurfaceQuality noisy = evaluateSurface(*exemplar_, random, alongX(random));
+  EXPECT_LT(std::abs(copy.flatness), 0.05);      // 0.022
+  EXPECT_LT(std::abs(fineCopy.flatness), 0.08);  // -0.043
+  EXPECT_DOUBLE_EQ(flat.flatness, 0.9);          // every patch flat
+  EXPECT_DOUBLE_EQ(noisy.flatness, -0.1);        // no patch as flat as the exemplar's flattest tenth
+}
+
+TEST_F(SurfaceQualityTest, CompletenessIsLowForAFullCopyHigherForPartOfItHighForOneColor) {
+  // The copy's evaluated middle shows texture pixels 18..46 along both axes: all of a 24-pixel
+  // window at 20, about half of a window twice as wide (and nothing outside either).
+  const Image window = exemplar_->crop(20, 20, 24, 24), wide = exemplar_->crop(20, 20, 44, 24);
+  Mesh coherent = *plane_, uniform = *plane_;
+  colorCoherently(coherent, *exemplar_, 12, 52);
+  colorUniformly(uniform, {0.5f, 0.5f, 0.5f});
+  const SurfaceQuality full = evaluateSurface(window, coherent, alongX(coherent));
+  const SurfaceQuality half = evaluateSurface(wide, coherent, alongX(coherent));
+  const SurfaceQuality none = evaluateSurface(window, uniform, alongX(uniform));
+  EXPECT_LT(full.completeness, 5.0);                    // 3.5: vertices fall between the exemplar's pixels
+  EXPECT_GT(half.completeness, 2 * full.completeness);  // 8.1
+  EXPECT_GT(none.completeness, 4 * half.completeness);  // 43.5
+}
+
 TEST_F(SurfaceQualityTest, BordersAreLeftOutUnlessAsked) {
   Mesh coherent = *plane_;
   colorCoherently(coherent, *exemplar_, 12, 52);
@@ -161,6 +219,8 @@ TEST_F(SurfaceQualityTest, SameResultForAnyThreadCountAndSeededSample) {
   EXPECT_EQ(one.coherence, two.coherence);
   EXPECT_EQ(one.rotationInvariant, two.rotationInvariant);
   EXPECT_EQ(one.histogram, two.histogram);
+  EXPECT_EQ(one.completeness, two.completeness);
+  EXPECT_EQ(one.flatness, two.flatness);
   options.seed = 2;  // another sample: close, but not the same vertices
   const SurfaceQuality other = evaluateSurface(*exemplar_, random, alongX(random), options);
   EXPECT_NE(other.coherence, one.coherence);

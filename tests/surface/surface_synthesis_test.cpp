@@ -96,15 +96,19 @@ TEST(SurfaceSynthesis, PlainDiscreteEnergyNeverRisesWithinALevelAndSize) {
 TEST(SurfaceSynthesis, SameSeedSameSourcesForAnyThreadCount) {
   const Fixture& f = fixture();
   std::vector<std::int32_t> one, three;
+  std::vector<Vec2f> oneCoordinates, threeCoordinates;
   {
     ThreadLimit limit(1);
-    one = f.run(smallOptions()).sources;
+    const SurfaceSynthesisResult result = f.run(smallOptions());
+    one = result.sources, oneCoordinates = result.coordinates;
   }
   {
     ThreadLimit limit(3);
-    three = f.run(smallOptions()).sources;
+    const SurfaceSynthesisResult result = f.run(smallOptions());
+    three = result.sources, threeCoordinates = result.coordinates;
   }
   EXPECT_EQ(one, three);
+  EXPECT_EQ(oneCoordinates, threeCoordinates);  // the same bits
   TextureOptimizationOptions other = smallOptions();
   other.seed = 9;
   EXPECT_NE(f.run(other).sources, one);

@@ -13,7 +13,8 @@
 namespace texsynth {
 
 struct FieldRenderOptions {
-  // Size, supersampling and lighting of each view; yaw/pitch are overridden by `views`.
+  // Size, supersampling, lighting and up of each view; yaw/pitch are overridden by `views`
+  // (and the cut's, cutViewAngles, turned to render.up).
   RenderOptions render;
   // Surface views as (yaw, pitch) in degrees, left to right; may be empty if showCut.
   std::vector<std::pair<float, float>> views{{30, 20}};

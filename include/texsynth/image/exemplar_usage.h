@@ -28,6 +28,8 @@ class UsageMap {
   // speaks in the same units as the energy whatever the exemplar's contrast. Negative for an
   // under-used pixel.
   float cost(std::int32_t pixel) const { return weight_ ? scale_ * relativeUsage_[std::size_t(pixel)] : 0.0f; }
+  // weight * sigma: what cost() multiplies usage - 1 by.
+  float scale() const { return scale_; }
 
  private:
   float weight_ = 0, scale_ = 0;

@@ -5,3 +5,4 @@
 #include "texsynth/render/primitives.h"
 #include "texsynth/render/render_mesh.h"
 #include "texsynth/render/slice_montage.h"
+#include "texsynth/render/view_up.h"

@@ -20,10 +20,14 @@ using SurfaceColorFunction = std::function<void(const std::vector<Vec3f>& points
 struct RenderOptions {
   // Output size in pixels; each in [1, 16384].
   int width = 768, height = 768;
-  // Camera orbit around the centre of the mesh bounds. World +Y is up. At yaw = pitch = 0
-  // the camera sits on +Z looking towards -Z (x to the right, y up); positive yaw moves the
-  // camera towards +X, positive pitch raises it (looking down). Any finite angles.
+  // Camera orbit around the centre of the mesh bounds. For up = +Y: at yaw = pitch = 0 the
+  // camera sits on +Z looking towards -Z (x to the right, y up); positive yaw moves the camera
+  // towards +X, positive pitch raises it (looking down). Any finite angles.
   float yawDegrees = 30, pitchDegrees = 20;
+  // The model's up direction (finite, non-zero; normalized internally): the orbit is turned by
+  // upFrame(up) (view_up.h), so yaw turns about `up`, pitch raises the camera towards it and
+  // `up` points up in the image. Commands set it from --up or viewUpDirection(mesh).
+  Vec3f up{0, 1, 0};
   // Field of view across the smaller image side, in (0, 170).
   float fovDegrees = 35;
   // Empty space kept around the mesh's bounding sphere, as a fraction of its radius; >= 0.

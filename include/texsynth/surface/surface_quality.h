@@ -13,6 +13,25 @@
 //                      mirrors: for textures whose orientation on the surface is not the tangents'
 //                      (solid textures cut by a surface), so orientation alone does not count.
 //                      Never above coherence.
+//   completeness       the reverse of coherence: each exemplar patch (all fully inside the
+//                      exemplar, or a hashed sample of 4096 of a larger one) is compared with its
+//                      exact nearest among the evaluated vertices' resampled patches; the RMS over
+//                      exemplar patches of the mean squared difference per value. High when the
+//                      surface shows only part of the exemplar (or none of it). Fewer evaluated
+//                      vertices leave more exemplar patches with only shifted copies of themselves
+//                      to meet, so it depends on `samples` (bunny, burlap: 17.5 at 4000 samples,
+//                      12.7 with all 48K vertices): compare results of equal samples and exemplar.
+//   flatness           the share of evaluated vertices whose resampled patch deviates less than the
+//                      exemplar's 10th-percentile patch does, minus 0.1. A patch's deviation: the RMS
+//                      difference of its values from the patch's mean color, over all its values.
+//                      The threshold: the (n / 10)-th smallest (from 0) deviation of the exemplar's n
+//                      patches fully inside it, each resampled bilinearly at a hashed sub-pixel
+//                      offset as the surface's patches are resampled between vertices (resampling
+//                      blurs: with the exemplar's patches as they are, a faithful surface copy of a
+//                      fine texture would read 0.2-0.6). So a faithful copy reads about 0 (within
+//                      about +-0.05, either side; not clamped), a one-color surface 0.9, and an
+//                      exemplar flat in a tenth of its patches has a threshold of 0 and reads -0.1
+//                      whatever the surface.
 //   histogram          mean over R, G, B of the Wasserstein-1 distance between the colors of all
 //                      vertices and the exemplar's pixels (eval/histogram_distance.h).
 #include <cstdint>
@@ -39,10 +58,12 @@ struct SurfaceQualityOptions {
 
 struct SurfaceQuality {
   double coherence = 0, rotationInvariant = 0, histogram = 0;
-  int evaluated = 0;   // vertices whose patches were compared
-  int nearBorder = 0;  // vertices left out by skipBorders (or in no triangle)
-  double spacing = 0;  // s, world units per texture pixel
-  double seconds = 0;  // wall time
+  double completeness = 0;  // RGB 0..255 units, as coherence
+  double flatness = 0;      // share of flat patches beyond the exemplar's 0.1, in [-0.1, 0.9]
+  int evaluated = 0;        // vertices whose patches were compared
+  int nearBorder = 0;       // vertices left out by skipBorders (or in no triangle)
+  double spacing = 0;       // s, world units per texture pixel
+  double seconds = 0;       // wall time
 };
 
 // The quality of `coloredMesh`'s vertex colors (mesh.colors, RGB in [0, 1]) against `exemplar`

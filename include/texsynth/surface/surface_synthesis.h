@@ -9,13 +9,17 @@
 //   the active vertices' neighborhoods (surface/surface_neighborhoods.h). Computed once; flow
 //   animation reuses it frame after frame.
 // - The synthesis (synthesizeSurface): coarse to fine over the hierarchy, level l reading the
-//   exemplar's Gaussian stack level l; a random coherent start at the coarsest level, then at
-//   every level E+M iterations at 17^2 and then 9^2 (Table 2) of the discrete solver shared with
-//   2D optimize (image/discrete_steps.h: same E-step, M-step, usage term and options); between
-//   levels each vertex's source is upsampled from its parent triangle's nearest corner.
-// The result is a SOURCE per vertex (an exemplar pixel), so colors are looked up at the end and
-// the same synthesis can be re-applied to other maps of the material. Deterministic for any
-// thread count.
+//   exemplar's Gaussian stack level l. At every level first the parallel k-coherence synthesis
+//   of surface_parallel.h (random coherent patches at the coarsest level, upsampling, jitter,
+//   correction, continuous coordinates), then the paper's E+M iterations at 17^2 and 9^2
+//   (Table 2) of the discrete solver shared with 2D optimize (image/discrete_steps.h), where the
+//   largest neighborhood fits the exemplar. The refined state replaces the start only when it is
+//   no flatter and its histogram no farther from the exemplar's (surface_level_measures.h): on
+//   its own the E+M from whole-pixel sources turns flat-background exemplars into one flat color
+//   (GIMP cracked on the CGAL dino: flatness 0.90 after E+M, -0.08 for the start).
+// The result is a continuous exemplar COORDINATE per vertex (and the nearest pixel, its SOURCE),
+// so colors are looked up at the end and the same synthesis can be re-applied to other maps of
+// the material. Deterministic for any thread count.
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -28,6 +32,8 @@
 #include "texsynth/geometry/mesh_topology.h"
 #include "texsynth/image/texture_optimization.h"
 #include "texsynth/surface/surface_neighborhoods.h"
+#include "texsynth/surface/surface_parallel.h"
+#include "texsynth/surface/surface_stencil.h"
 #include "texsynth/surface/tangent_field.h"
 
 namespace texsynth {
@@ -48,7 +54,13 @@ struct PreparedSurfaceLevel {
   // One per neighborhood size, in the order of the sizes prepareSurface was given; active
   // centres activeStride(N) cells apart.
   std::vector<SurfaceNeighborhoods> neighborhoods;
+  // Every vertex's kStencilSize^2 flattened neighbourhood: the start's comparisons
+  // (surface_parallel.h).
+  SurfaceStencil stencil;
 };
+
+// The side of the start's correction stencil, in cells (L&H 2005 correct with 5 x 5).
+inline constexpr int kStencilSize = 5;
 
 struct PreparedSurface {
   MeshHierarchy hierarchy;
@@ -65,24 +77,46 @@ struct PreparedSurface {
 PreparedSurface prepareSurface(MeshHierarchy hierarchy, const SurfaceOrientation& orientation,
                                std::span<const int> neighborhoodSizes, Progress& progress = noProgress());
 
+// How surface synthesis starts and whether the discrete optimization refines the start.
+struct SurfaceStartOptions {
+  SurfaceParallelOptions parallel;  // its seed is replaced by the synthesis options' seed
+  // E+M iterations on top of the start at every level the optimization can run at.
+  bool refine = true;
+};
+
+// Whether the E+M refinement of one level was kept: the start's and the refined state's
+// measures (surface_level_measures.h).
+struct SurfaceRefinement {
+  int level = 0;
+  double startFlatness = 0, startHistogram = 0;
+  double refinedFlatness = 0, refinedHistogram = 0;
+  bool kept = false;
+};
+
 struct SurfaceSynthesisResult {
-  // Per vertex of the finest level: the exemplar pixel (y * exemplar width + x) it copies.
+  // Per vertex of the finest level: its continuous exemplar coordinate (pixels, centres at
+  // integers; surface_parallel.h), which the colors are looked up at.
+  std::vector<Vec2f> coordinates;
+  // Per vertex of the finest level: the exemplar pixel (y * exemplar width + x) nearest its coordinate.
   std::vector<std::int32_t> sources;
   // Per vertex: the exemplar's color there (RGB in [0, 1]; gray exemplars repeat their channel).
   std::vector<Vec3f> colors;
   std::vector<OptimizationIteration> history;  // one entry per M-step, as 2D optimize reports
-  int firstLevel = 0;                          // the coarsest level synthesized (see below)
+  std::vector<SurfaceRefinement> levels;       // one per refined level, coarsest first
+  int firstLevel = 0;                          // the coarsest level E+M may refine (see below)
   double seconds = 0;                          // wall time of the synthesis
 };
 
 // Synthesizes on a prepared surface. `analyses` are optimizationAnalysisOptions(options) on one
 // exemplar, whose levels must equal the hierarchy's; options.solver must be Discrete (the
-// least-squares solver keeps no sources) and options.neighborhoodSizes the prepared ones. As
-// in 2D, levels whose largest neighborhood does not fit inside the exemplar are skipped (there a
-// tiled copy of it is a zero-energy optimum): synthesis then starts at a finer level.
+// least-squares solver keeps no sources) and options.neighborhoodSizes the prepared ones. The
+// start runs at every level; as in 2D, the E+M refinement skips levels whose largest
+// neighborhood does not fit inside the exemplar (there a tiled copy of it is a zero-energy
+// optimum), and runs only with start.refine.
 // Progress: one stage per level. Throws ParameterError for options or analyses that do not fit.
 SurfaceSynthesisResult synthesizeSurface(std::span<const ExemplarAnalysis> analyses, const PreparedSurface& surface,
-                                         const TextureOptimizationOptions& options, Progress& progress = noProgress());
+                                         const TextureOptimizationOptions& options, Progress& progress = noProgress(),
+                                         const SurfaceStartOptions& start = {});
 
 // RGB colors of exemplar pixels `sources` in `image` (any channel count; gray is repeated, a
 // fourth channel dropped): the synthesized colors, or another map of the same material through
