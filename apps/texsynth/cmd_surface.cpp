@@ -152,6 +152,8 @@ void runSurface(const CLI::App& parser, const SurfaceArgs& args, const GlobalOpt
     report["refinement"].push_back({{"level", r.level},
                                     {"start_flatness", r.startFlatness},
                                     {"start_histogram", r.startHistogram},
+                                    {"start_distinctive", r.startDistinctive},
+                                    {"refined_distinctive", r.refinedDistinctive},
                                     {"refined_flatness", r.refinedFlatness},
                                     {"refined_histogram", r.refinedHistogram},
                                     {"kept", r.kept}});

@@ -89,9 +89,9 @@ std::string surfaceMarkdown(const json& surface) {
      << " vertices, oriented by a smooth tangent field (the exemplar upright), and every vertex "
         "a continuous exemplar coordinate: coarse to fine, k-coherence synthesis as 2D `parallel` "
         "(random coherent patches, upsampling through the parent triangles, jitter, correction of "
-        "every vertex's 5x5 flattened neighbourhood), then the discrete solver that 2D `optimize` "
-        "uses (neighborhoods resampled on the surface, 17x17 then 9x9), whose result is kept only "
-        "where it is no flatter and no farther from the exemplar's histogram (kept at "
+        "every vertex's 5x5 flattened neighbourhood), then the E+M steps of 2D `optimize` on those "
+        "coordinates (17x17 then 9x9 neighborhoods), whose result is kept unless it makes a level "
+        "flat or loses the exemplar's distinctive colors (kept at "
      << surface["refined_levels_kept"] << " of " << surface["refined_levels"] << " levels here).\n\n";
   md << "| stage | seconds |\n|---|---:|\n";
   md << "| mesh hierarchy (cached for the next run) | " << fixed3(surface["hierarchy_seconds"]) << " |\n";

@@ -74,6 +74,27 @@ SurfaceLevelMeasures measureSurfaceLevel(const SurfaceStencil& stencil, const Ex
   for (std::uint8_t f : flat) flatCount += f;
   measures.flatness = coordinates.empty() ? 0.0 : double(flatCount) / double(coordinates.size()) - 0.10;
 
+  // Distinctive colors: farther from the per-channel median than the exemplar's 80th percentile.
+  const std::size_t pixelCount = std::size_t(image.width) * image.height;
+  std::vector<float> median(static_cast<std::size_t>(channels)), values(pixelCount);
+  for (int c = 0; c < channels; ++c) {
+    for (std::size_t p = 0; p < pixelCount; ++p) values[p] = image.pixels[p * channels + std::size_t(c)];
+    std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(pixelCount / 2), values.end());
+    median[std::size_t(c)] = values[pixelCount / 2];
+  }
+  auto fromMedian = [&](const float* color) {
+    float sum = 0;
+    for (int c = 0; c < channels; ++c) sum += (color[c] - median[std::size_t(c)]) * (color[c] - median[std::size_t(c)]);
+    return sum;
+  };
+  for (std::size_t p = 0; p < pixelCount; ++p) values[p] = fromMedian(image.pixels.data() + p * channels);
+  const std::size_t fifth = pixelCount * 4 / 5;
+  std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(fifth), values.end());
+  const float far = values[fifth];
+  std::size_t distinctive = 0;
+  for (std::size_t v = 0; v < coordinates.size(); ++v) distinctive += fromMedian(colors.data() + v * channels) > far;
+  measures.distinctive = coordinates.empty() ? 0.0 : double(distinctive) / double(coordinates.size());
+
   // Wasserstein-1 per channel between the sorted vertex values and the sorted exemplar values,
   // compared at matching quantiles.
   const std::size_t n = coordinates.size(), m = std::size_t(image.width) * image.height;

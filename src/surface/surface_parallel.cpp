@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "continuous_coordinates.h"
 #include "texsynth/core/parallel.h"
 #include "texsynth/core/random.h"
 #include "texsynth/core/wrap.h"
@@ -15,31 +16,12 @@
 namespace texsynth {
 namespace {
 
+using surface_detail::NearestLookup;
+using surface_detail::nearestPixel;
+using surface_detail::wrapCoordinate;
+
 // Members within this many cells of the vertex propose candidates (its 3 x 3 ring).
 constexpr float kProposingRadius = 1.6f;
-
-float wrapCoordinate(float v, int n) {
-  v = std::fmod(v, float(n));
-  if (v < 0) v += float(n);
-  return v >= float(n) ? 0.0f : v;
-}
-
-// The level's color at (x, y), in pixel units (centres at integers), any real coordinates,
-// wrapped: the nearest pixel's. Bilinear lookups would register as well but blur: at random
-// sub-pixel offsets they average away about half of a fine texture's variance (GIMP burlap on
-// the CGAL bunny: histogram distance 5.1 against 2.5, and the weave's threads soften).
-struct NearestLookup {
-  const Image& image;
-  int channels;
-  const float* operator()(float x, float y) const {
-    return image.pixel(wrapIndex(int(std::lround(x)), image.width), wrapIndex(int(std::lround(y)), image.height));
-  }
-};
-
-std::int32_t nearestPixel(const Vec2f& c, int width, int height) {
-  const int x = wrapIndex(int(std::lround(c.x())), width), y = wrapIndex(int(std::lround(c.y())), height);
-  return std::int32_t(y) * width + x;
-}
 
 }  // namespace
 

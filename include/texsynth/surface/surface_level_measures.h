@@ -18,6 +18,11 @@ struct SurfaceLevelMeasures {
   // Mean over channels of the Wasserstein-1 distance between the vertices' colors and the level's
   // pixels (color units of the level, 0..1).
   double histogram = 0;
+  // The share of vertices whose color is farther from the level's median color than four fifths
+  // of its pixels are: the exemplar's distinctive colors (about 0.2 when faithful; the sparse dark
+  // features of a flat-background exemplar, whose flatness above cannot see them, when most of
+  // its patches are flat).
+  double distinctive = 0;
 };
 
 // The measures of `coordinates` (one per stencil vertex; nearest-pixel colors of `level`).

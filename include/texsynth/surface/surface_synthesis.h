@@ -12,11 +12,12 @@
 //   exemplar's Gaussian stack level l. At every level first the parallel k-coherence synthesis
 //   of surface_parallel.h (random coherent patches at the coarsest level, upsampling, jitter,
 //   correction, continuous coordinates), then the paper's E+M iterations at 17^2 and 9^2
-//   (Table 2) of the discrete solver shared with 2D optimize (image/discrete_steps.h), where the
-//   largest neighborhood fits the exemplar. The refined state replaces the start only when it is
-//   no flatter and its histogram no farther from the exemplar's (surface_level_measures.h): on
-//   its own the E+M from whole-pixel sources turns flat-background exemplars into one flat color
-//   (GIMP cracked on the CGAL dino: flatness 0.90 after E+M, -0.08 for the start).
+//   (Table 2) on those continuous coordinates (surface_optimization.h: k-coherence M-step with
+//   the usage term and random candidates of 2D optimize, strongest-vote E-step), where the
+//   largest neighborhood fits the exemplar. The refined state replaces the start unless it makes
+//   the level flat, loses the exemplar's distinctive colors or moves its histogram far
+//   (surface_level_measures.h; the tolerances in surface_synthesis.cpp): on flat-background
+//   exemplars E+M erodes the sparse features (GIMP cracked on the CGAL dino: flatness 0.85).
 // The result is a continuous exemplar COORDINATE per vertex (and the nearest pixel, its SOURCE),
 // so colors are looked up at the end and the same synthesis can be re-applied to other maps of
 // the material. Deterministic for any thread count.
@@ -88,8 +89,8 @@ struct SurfaceStartOptions {
 // measures (surface_level_measures.h).
 struct SurfaceRefinement {
   int level = 0;
-  double startFlatness = 0, startHistogram = 0;
-  double refinedFlatness = 0, refinedHistogram = 0;
+  double startFlatness = 0, startHistogram = 0, startDistinctive = 0;
+  double refinedFlatness = 0, refinedHistogram = 0, refinedDistinctive = 0;
   bool kept = false;
 };
 
