@@ -105,7 +105,7 @@ Image wavesExemplar() {
 
 TEST(SurfaceParallel, SynthesisOnASphereIsMadeOfNearlyCoherentCopies) {
   const Image exemplar = wavesExemplar();
-  const Synthesized run(exemplar, test::icosphere(3), 3000);
+  const Synthesized run(exemplar, test::icosphere(3), 1500);
   const std::vector<ExemplarAnalysis>& analyses = run.analyses;
   const PreparedSurface& surface = run.surface;
   const SurfaceSynthesisResult& result = run.result;
@@ -168,7 +168,7 @@ TEST(SurfaceParallel, AFlatBackgroundExemplarKeepsItsFeaturesOnAMeshWithAThinPar
   for (std::size_t v = 0; v < finest.vertexCount(); ++v)
     if (finest.positions[v].x() > 1.2f) armColors.push_back(result.colors[v]);
   ASSERT_GT(armColors.size(), 50u);
-  EXPECT_GT(darkShare(armColors), 0.3 * expected);
+  EXPECT_GT(darkShare(armColors), 0.3 * expected) << "arm " << darkShare(armColors);
 }
 
 }  // namespace
