@@ -187,8 +187,9 @@ Command registerSurfaceCommand(CLI::App& app, const GlobalOptions& globals) {
       "surface",
       "Grow a texture directly on a mesh's surface (surface texture synthesis by discrete optimization, Han et al.): "
       "the mesh is retiled to --vertices near-uniform vertices and every vertex copies one pixel of EXEMPLAR, chosen "
-      "so that every neighborhood on the surface looks like a neighborhood of the exemplar. No UV seams, no "
-      "stretching, no tiling.\n"
+      "so that every neighborhood on the surface looks like a neighborhood of the exemplar: coarse to fine, a "
+      "k-coherence synthesis as `image --method parallel` on the mesh hierarchy, refined by the paper's E+M steps "
+      "where that keeps the texture (--stats: refinement). No UV seams, no stretching, no tiling.\n"
       "  Texture density: one exemplar pixel per vertex spacing, so --vertices sets the scale: a 128-pixel-wide "
       "exemplar spans 128 vertex spacings of the surface. More vertices: smaller features, more repetitions and a "
       "finer result, at about linear cost.\n"
