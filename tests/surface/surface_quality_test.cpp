@@ -155,22 +155,21 @@ TEST_F(SurfaceQualityTest, TurnedCopyIsCoherentOnlyRotationInvariantly) {
 }
 
 TEST_F(SurfaceQualityTest, FlatnessIsNearZeroForACopyAndHighForOneColor) {
-  Mesh coherent = *plane_, pixels = *plane_, uniform = *plane_, random = *plane_;
+  Mesh coherent = *plane_, pixels = *plane_, uniform = *plane_;
   colorCoherently(coherent, *exemplar_, 12, 52);
   const Image fine = fineTexture(64);
   colorByPixel(pixels, fine, 12, 52);
   colorUniformly(uniform, {0.5f, 0.4f, 0.3f});
-  colorRandomly(random, *exemplar_);
   const SurfaceQuality copy = evaluateSurface(*exemplar_, coherent, alongX(coherent));
   // Resampling between vertices blurs a fine texture: the exemplar's patches are resampled too
   // before they set the threshold, or this would read 0.3.
   const SurfaceQuality fineCopy = evaluateSurface(fine, pixels, alongX(pixels));
   const SurfaceQuality flat = evaluateSurface(*exemplar_, uniform, alongX(uniform));
-  const SurfaceQuality noisy = evaluateSurface(*exemplar_, random, alongX(random));
   EXPECT_LT(std::abs(copy.flatness), 0.05);      // 0.022
   EXPECT_LT(std::abs(fineCopy.flatness), 0.08);  // -0.043
   EXPECT_DOUBLE_EQ(flat.flatness, 0.9);          // every patch flat
-  EXPECT_DOUBLE_EQ(noisy.flatness, -0.1);        // no patch as flat as the exemplar's flattest tenth
+  // (Random colors read -0.1, no patch as flat as the exemplar's flattest tenth: left out, as
+  // their exact searches take a third of this test's time under the sanitizers.)
 }
 
 TEST_F(SurfaceQualityTest, CompletenessIsLowForAFullCopyHigherForPartOfItHighForOneColor) {
