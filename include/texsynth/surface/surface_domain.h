@@ -1,7 +1,8 @@
 #pragma once
-// Surface synthesis and flow animation: one level's resampled neighborhoods as a domain of the discrete
-// solver's steps (texsynth/image/discrete_steps.h). Samples are vertices; a neighborhood reads
-// its cells as convex combinations of vertex colors (x_p = W_p x), its members and coverings at
+// Flow animation on surfaces: one level's resampled neighborhoods as a domain of the discrete
+// solver's steps (texsynth/image/discrete_steps.h), which repair each advected frame. (Static
+// surface synthesis refines on continuous coordinates instead: surface_optimization.h.) Samples are vertices; a
+// neighborhood reads its cells as convex combinations of vertex colors (x_p = W_p x), its members and coverings at
 // their flattened offsets.
 #include <cstdint>
 #include <limits>
