@@ -66,6 +66,7 @@ json frameJson(const FrameStatistics& s) {
           {"solve_seconds", s.solveSeconds},
           {"energy", s.energy},
           {"kept", s.keptFraction},
+          {"solver_kept", s.solverKept},
           {"temporal_change", s.temporalChange}};
 }
 

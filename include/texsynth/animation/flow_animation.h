@@ -53,6 +53,9 @@ struct FrameStatistics {
   double energy = 0;          // E_t of the last M-step, per pixel (as OptimizationIteration::energy)
   double keptFraction = 1;    // samples whose source is still the advected one
   double temporalChange = 0;  // mean color change to the previous frame carried along (meanColorChange)
+  // Surfaces: whether the solver's repair was kept (false: it would have made the frame flat, and
+  // the advected frame was repaired by the surface start's correction instead).
+  bool solverKept = true;
 };
 
 }  // namespace texsynth

@@ -9,6 +9,7 @@
 #include "texsynth/animation/flow_animation.h"
 #include "texsynth/core/progress.h"
 #include "texsynth/geometry/surface_projector.h"
+#include "texsynth/surface/surface_level_measures.h"
 #include "texsynth/surface/surface_synthesis.h"
 
 namespace texsynth {
@@ -42,6 +43,7 @@ class SurfaceAnimator {
   ExemplarPositions positions_;
   std::vector<Vec3f> colors_;
   FrameStatistics statistics_;
+  SurfaceLevelMeasures reference_;  // frame 0's flatness and distinctive colors
 };
 
 }  // namespace texsynth
