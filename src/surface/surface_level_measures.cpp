@@ -5,37 +5,13 @@
 #include <cmath>
 #include <vector>
 
+#include "surface_patch_statistics.h"
 #include "texsynth/core/parallel.h"
 #include "texsynth/core/wrap.h"
+#include "texsynth/eval/histogram_distance.h"
 #include "texsynth/surface/surface_parallel.h"
 
 namespace texsynth {
-namespace {
-
-// Standard deviation of a set of colors: the RMS distance of its values from their channel means.
-class Spread {
- public:
-  explicit Spread(int channels) : sum_(std::size_t(channels), 0.0), squares_(std::size_t(channels), 0.0) {}
-  void add(const float* color) {
-    for (std::size_t c = 0; c < sum_.size(); ++c) sum_[c] += color[c], squares_[c] += double(color[c]) * color[c];
-    ++count_;
-  }
-  double deviation() const {
-    if (count_ == 0) return 0;
-    double variance = 0;
-    for (std::size_t c = 0; c < sum_.size(); ++c) {
-      const double mean = sum_[c] / count_;
-      variance += std::max(0.0, squares_[c] / count_ - mean * mean);
-    }
-    return std::sqrt(variance / double(sum_.size()));
-  }
-
- private:
-  std::vector<double> sum_, squares_;
-  int count_ = 0;
-};
-
-}  // namespace
 
 SurfaceLevelMeasures measureSurfaceLevel(const SurfaceStencil& stencil, const ExemplarLevel& level,
                                          std::span<const Vec2f> coordinates) {
@@ -48,13 +24,16 @@ SurfaceLevelMeasures measureSurfaceLevel(const SurfaceStencil& stencil, const Ex
 
   // The exemplar's neighbourhoods of the stencil's size, h apart, at every other pixel.
   std::vector<double> exemplarSpread;
+  std::vector<float> patch;
   for (int y = 0; y < image.height; y += 2)
     for (int x = 0; x < image.width; x += 2) {
-      Spread spread(channels);
+      patch.clear();
       for (int dy = -radius; dy <= radius; ++dy)
-        for (int dx = -radius; dx <= radius; ++dx)
-          spread.add(image.pixel(wrapIndex(x + dx * h, image.width), wrapIndex(y + dy * h, image.height)));
-      exemplarSpread.push_back(spread.deviation());
+        for (int dx = -radius; dx <= radius; ++dx) {
+          const float* p = image.pixel(wrapIndex(x + dx * h, image.width), wrapIndex(y + dy * h, image.height));
+          patch.insert(patch.end(), p, p + channels);
+        }
+      exemplarSpread.push_back(surface_detail::patchDeviation(patch.data(), int(patch.size()) / channels, channels));
     }
   const std::size_t tenth = exemplarSpread.size() / 10;
   std::nth_element(exemplarSpread.begin(), exemplarSpread.begin() + std::ptrdiff_t(tenth), exemplarSpread.end());
@@ -62,11 +41,15 @@ SurfaceLevelMeasures measureSurfaceLevel(const SurfaceStencil& stencil, const Ex
 
   std::vector<std::uint8_t> flat(coordinates.size(), 0);
   parallelForChunks(0, std::int64_t(coordinates.size()), 4096, [&](std::int64_t begin, std::int64_t end) {
+    std::vector<float> members;
     for (std::int64_t v = begin; v < end; ++v) {
-      Spread spread(channels);
-      for (const NeighborhoodMember& m : stencil.of(std::size_t(v)))
-        spread.add(colors.data() + std::size_t(m.vertex) * channels);
-      flat[std::size_t(v)] = spread.deviation() < threshold;
+      members.clear();
+      for (const NeighborhoodMember& m : stencil.of(std::size_t(v))) {
+        const float* color = colors.data() + std::size_t(m.vertex) * channels;
+        members.insert(members.end(), color, color + channels);
+      }
+      flat[std::size_t(v)] =
+          surface_detail::patchDeviation(members.data(), int(members.size()) / channels, channels) < threshold;
     }
   });
   SurfaceLevelMeasures measures;
@@ -95,20 +78,14 @@ SurfaceLevelMeasures measureSurfaceLevel(const SurfaceStencil& stencil, const Ex
   for (std::size_t v = 0; v < coordinates.size(); ++v) distinctive += fromMedian(colors.data() + v * channels) > far;
   measures.distinctive = coordinates.empty() ? 0.0 : double(distinctive) / double(coordinates.size());
 
-  // Wasserstein-1 per channel between the sorted vertex values and the sorted exemplar values,
-  // compared at matching quantiles.
-  const std::size_t n = coordinates.size(), m = std::size_t(image.width) * image.height;
-  if (n == 0) return measures;
-  std::vector<float> ours(n), theirs(m);
+  // Wasserstein-1 per channel between the vertices' values and the level's pixels.
+  if (coordinates.empty()) return measures;
+  std::vector<float> ours(coordinates.size()), theirs(pixelCount);
   double total = 0;
   for (int c = 0; c < channels; ++c) {
-    for (std::size_t v = 0; v < n; ++v) ours[v] = colors[v * channels + std::size_t(c)];
-    for (std::size_t p = 0; p < m; ++p) theirs[p] = image.pixels[p * channels + std::size_t(c)];
-    std::sort(ours.begin(), ours.end());
-    std::sort(theirs.begin(), theirs.end());
-    double sum = 0;
-    for (std::size_t v = 0; v < n; ++v) sum += std::abs(ours[v] - theirs[std::min(m - 1, (2 * v + 1) * m / (2 * n))]);
-    total += sum / double(n);
+    for (std::size_t v = 0; v < ours.size(); ++v) ours[v] = colors[v * channels + std::size_t(c)];
+    for (std::size_t p = 0; p < pixelCount; ++p) theirs[p] = image.pixels[p * channels + std::size_t(c)];
+    total += wasserstein1(ours, theirs);
   }
   measures.histogram = total / channels;
   return measures;

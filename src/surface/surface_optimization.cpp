@@ -18,8 +18,10 @@
 namespace texsynth {
 namespace {
 
+using surface_detail::atPixel;
 using surface_detail::NearestLookup;
 using surface_detail::nearestPixel;
+using surface_detail::subPixel;
 using surface_detail::wrapCoordinates;
 
 // The M-step's shortlist: candidates ranked on every kSampleStride-th member, the best
@@ -85,11 +87,8 @@ class Solver {
         uniqueByPixel(proposals);
         candidates.clear();
         for (const auto& [pixel, p] : proposals) {
-          const Vec2f fraction(p.x() - std::round(p.x()), p.y() - std::round(p.y()));
           const std::int32_t* similar = analysis_.similarAt(level_, pixel);
-          for (int i = 0; i < k; ++i)
-            addCandidate(candidates,
-                         Vec2f(float(similar[i] % width) + fraction.x(), float(similar[i] / width) + fraction.y()));
+          for (int i = 0; i < k; ++i) addCandidate(candidates, atPixel(similar[i], width, subPixel(p)));
         }
         for (int r = 0; r < options_.randomCandidates; ++r) {
           const std::uint64_t key = hashKey(randomKey, std::uint64_t(a), std::uint64_t(r));
@@ -100,29 +99,22 @@ class Solver {
         auto term = [&](const Vec2f& c) {
           return usage.active() ? float(members.size()) * usage.cost(nearestPixel(c, width, height)) : 0.0f;
         };
-        auto distance = [&](const Vec2f& c, float bound) {
-          float sum = 0;
-          for (const NeighborhoodMember& m : members) {
+        // Sum of the members' color distances (every stride-th member) to the level at c + h d.
+        auto distance = [&](const Vec2f& c, float sum, float bound, std::size_t stride) {
+          for (std::size_t i = 0; i < members.size() && sum < bound; i += stride) {
+            const NeighborhoodMember& m = members[i];
             sum += colorDistance(lookup_(c.x() + h_ * m.dx, c.y() + h_ * m.dy),
                                  colors.data() + std::size_t(m.vertex) * std::size_t(channels_), channels_);
-            if (sum >= bound) break;
           }
           return sum;
         };
+        const float infinity = std::numeric_limits<float>::infinity();
         // Rank the candidates on every kSampleStride-th member, measure the best few on all (as
         // 2D ranks in PCA space).
         if (candidates.size() > kShortlist) {
           ranked.clear();
-          for (const auto& candidate : candidates) {
-            float sum = term(candidate.second);
-            const Vec2f& c = candidate.second;
-            for (std::size_t i = 0; i < members.size(); i += kSampleStride) {
-              const NeighborhoodMember& m = members[i];
-              sum += colorDistance(lookup_(c.x() + h_ * m.dx, c.y() + h_ * m.dy),
-                                   colors.data() + std::size_t(m.vertex) * std::size_t(channels_), channels_);
-            }
-            ranked.push_back({sum, candidate});
-          }
+          for (const auto& candidate : candidates)
+            ranked.push_back({distance(candidate.second, term(candidate.second), infinity, kSampleStride), candidate});
           std::partial_sort(ranked.begin(), ranked.begin() + std::ptrdiff_t(kShortlist), ranked.end(),
                             [](const auto& x, const auto& y) {
                               return x.first != y.first ? x.first < y.first : x.second.first < y.second.first;
@@ -130,16 +122,15 @@ class Solver {
           candidates.clear();
           for (std::size_t i = 0; i < kShortlist; ++i) candidates.push_back(ranked[i].second);
         }
-        const float infinity = std::numeric_limits<float>::infinity();
         const bool had = matches.valid[std::size_t(a)] != 0;
         Vec2f bestPosition = matches.position[std::size_t(a)];
-        float bestDistance = had ? distance(bestPosition, infinity) : infinity;
+        float bestDistance = had ? distance(bestPosition, 0.0f, infinity, 1) : infinity;
         float best = had ? bestDistance + term(bestPosition) : infinity;
         const std::int32_t current = had ? nearestPixel(bestPosition, width, height) : -1;
         for (const auto& [pixel, c] : candidates) {
           if (pixel == current) continue;
           const float extra = term(c);
-          const float d = distance(c, best - extra);
+          const float d = distance(c, 0.0f, best - extra, 1);
           if (d + extra < best) best = d + extra, bestDistance = d, bestPosition = c;
         }
         changed[std::size_t(a)] = !had || nearestPixel(bestPosition, width, height) != current;

@@ -16,8 +16,11 @@
 namespace texsynth {
 namespace {
 
+using surface_detail::atPixel;
 using surface_detail::NearestLookup;
 using surface_detail::nearestPixel;
+using surface_detail::stencilDistance;
+using surface_detail::subPixel;
 using surface_detail::wrapCoordinate;
 
 // Members within this many cells of the vertex propose candidates (its 3 x 3 ring).
@@ -111,8 +114,7 @@ std::vector<std::int32_t> pixelsOfCoordinates(std::span<const Vec2f> coordinates
 
 std::vector<Vec2f> coordinatesOfPixels(std::span<const std::int32_t> pixels, int exemplarWidth) {
   std::vector<Vec2f> coordinates(pixels.size());
-  for (std::size_t v = 0; v < pixels.size(); ++v)
-    coordinates[v] = Vec2f(float(pixels[v] % exemplarWidth), float(pixels[v] / exemplarWidth));
+  for (std::size_t v = 0; v < pixels.size(); ++v) coordinates[v] = atPixel(pixels[v], exemplarWidth);
   return coordinates;
 }
 
@@ -150,11 +152,8 @@ double correctSurfaceCoordinates(const SurfaceStencil& stencil, const ExemplarAn
           if (std::find(seen.begin(), seen.end(), pixel) != seen.end()) return;
           seen.push_back(pixel);
           candidates.push_back(c);
-          const Vec2f fraction(c.x() - std::round(c.x()), c.y() - std::round(c.y()));
           const std::int32_t* similar = analysis.similarAt(level, pixel);
-          for (int i = 1; i < k; ++i)
-            candidates.push_back(
-                Vec2f(float(similar[i] % width) + fraction.x(), float(similar[i] / width) + fraction.y()));
+          for (int i = 1; i < k; ++i) candidates.push_back(atPixel(similar[i], width, subPixel(c)));
         };
         for (const NeighborhoodMember& m : members)
           if (m.dx * m.dx + m.dy * m.dy <= kProposingRadius * kProposingRadius)
@@ -163,14 +162,9 @@ double correctSurfaceCoordinates(const SurfaceStencil& stencil, const ExemplarAn
         float best = std::numeric_limits<float>::infinity();
         Vec2f bestCoordinate = coordinates[std::size_t(v)];
         for (const Vec2f& c : candidates) {
-          float sum =
+          const float term =
               usage.active() ? usageScale * float(members.size()) * usage.cost(nearestPixel(c, width, height)) : 0.0f;
-          for (const NeighborhoodMember& m : members) {
-            const float* looked = lookup(c.x() + h * m.dx, c.y() + h * m.dy);
-            const float* color = colors.data() + std::size_t(m.vertex) * std::size_t(channels);
-            for (int i = 0; i < channels; ++i) sum += (looked[i] - color[i]) * (looked[i] - color[i]);
-            if (sum >= best) break;
-          }
+          const float sum = stencilDistance(lookup, colors.data(), members, c, h, term, best);
           if (sum < best) best = sum, bestCoordinate = c;
         }
         next[std::size_t(v)] =
@@ -185,10 +179,6 @@ double correctSurfaceCoordinates(const SurfaceStencil& stencil, const ExemplarAn
   return vertices > 0 ? sum / double(vertices) : 0.0;
 }
 
-}  // namespace texsynth
-
-namespace texsynth {
-
 std::vector<float> stencilDistances(const SurfaceStencil& stencil, const ExemplarAnalysis& analysis, int level,
                                     std::span<const Vec2f> coordinates) {
   const ExemplarLevel& exemplar = analysis.levels[std::size_t(level)];
@@ -199,14 +189,9 @@ std::vector<float> stencilDistances(const SurfaceStencil& stencil, const Exempla
   std::vector<float> distances(coordinates.size());
   parallelForChunks(0, std::int64_t(coordinates.size()), 4096, [&](std::int64_t begin, std::int64_t end) {
     for (std::int64_t v = begin; v < end; ++v) {
-      const Vec2f& c = coordinates[std::size_t(v)];
-      float sum = 0;
-      for (const NeighborhoodMember& m : stencil.of(std::size_t(v))) {
-        const float* looked = lookup(c.x() + h * m.dx, c.y() + h * m.dy);
-        const float* color = colors.data() + std::size_t(m.vertex) * std::size_t(channels);
-        for (int i = 0; i < channels; ++i) sum += (looked[i] - color[i]) * (looked[i] - color[i]);
-      }
-      distances[std::size_t(v)] = sum / float(stencil.of(std::size_t(v)).size() * std::size_t(channels));
+      const std::span<const NeighborhoodMember> members = stencil.of(std::size_t(v));
+      const float sum = stencilDistance(lookup, colors.data(), members, coordinates[std::size_t(v)], h);
+      distances[std::size_t(v)] = sum / float(members.size() * std::size_t(channels));
     }
   });
   return distances;

@@ -22,18 +22,18 @@ void copyPatch(const Image& image, int patchSize, int x, int y, float* out) {
 
 }  // namespace
 
-double patchDeviation(const float* values, int pixels) {
-  double mean[3] = {0, 0, 0};
+double patchDeviation(const float* values, int pixels, int channels) {
+  std::vector<double> mean(static_cast<std::size_t>(channels), 0.0);
   for (int p = 0; p < pixels; ++p)
-    for (int c = 0; c < 3; ++c) mean[c] += values[3 * p + c];
+    for (int c = 0; c < channels; ++c) mean[std::size_t(c)] += values[p * channels + c];
   for (double& m : mean) m /= pixels;
   double sum = 0;
   for (int p = 0; p < pixels; ++p)
-    for (int c = 0; c < 3; ++c) {
-      const double diff = double(values[3 * p + c]) - mean[c];
+    for (int c = 0; c < channels; ++c) {
+      const double diff = double(values[p * channels + c]) - mean[std::size_t(c)];
       sum += diff * diff;
     }
-  return std::sqrt(sum / (3.0 * pixels));
+  return std::sqrt(sum / (double(channels) * pixels));
 }
 
 double flatnessThreshold(const Image& exemplar255, int patchSize) {

@@ -12,9 +12,10 @@
 
 namespace texsynth::surface_detail {
 
-// The deviation of an RGB patch of `pixels` pixels: the RMS difference of its values from the
-// patch's mean color, over all its values (0 for a one-color patch).
-double patchDeviation(const float* values, int pixels);
+// The deviation of a patch of `pixels` pixels of `channels` values each (RGB by default): the
+// RMS difference of its values from the patch's mean color, over all its values (0 for a
+// one-color patch).
+double patchDeviation(const float* values, int pixels, int channels = 3);
 
 // The flatness threshold of an RGB 0..255 exemplar: the 10th-percentile deviation (the
 // (n / 10)-th smallest, counting from 0) of its n patchSize x patchSize patches fully inside it,
