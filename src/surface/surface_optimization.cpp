@@ -10,6 +10,7 @@
 #include "continuous_coordinates.h"
 #include "texsynth/core/parallel.h"
 #include "texsynth/core/random.h"
+#include "texsynth/image/color_histogram_cost.h"
 #include "texsynth/image/discrete_steps.h"
 #include "texsynth/image/exemplar_usage.h"
 #include "texsynth/image/exemplar_window.h"
@@ -51,12 +52,13 @@ void uniqueByPixel(std::vector<std::pair<std::int32_t, Vec2f>>& items) {
 class Solver {
  public:
   Solver(const SurfaceNeighborhoods& neighborhoods, const ExemplarAnalysis& analysis, int level, std::size_t scale,
-         const TextureOptimizationOptions& options)
+         const TextureOptimizationOptions& options, float histogramWeight)
       : neighborhoods_(neighborhoods),
         analysis_(analysis),
         level_(level),
         scale_(scale),
         options_(options),
+        histogramWeight_(histogramWeight),
         image_(analysis.levels[std::size_t(level)].image),
         window_(analysis, level, neighborhoods.size, detail::PixelNorm::Euclidean),
         h_(float(analysis.levels[std::size_t(level)].spacing)),
@@ -68,7 +70,14 @@ class Solver {
   std::int64_t match(std::span<const Vec2f> coordinates, ContinuousMatches& matches, int iteration) const {
     const int width = analysis_.width, height = analysis_.height, k = analysis_.similarCount;
     const std::vector<float> colors = colorsAtCoordinates(image_, coordinates);
-    const detail::UsageMap usage(window_, pixelsOfCoordinates(coordinates, width, height), options_.coverageWeight);
+    const std::vector<std::int32_t> sources = pixelsOfCoordinates(coordinates, width, height);
+    const detail::UsageMap usage(window_, sources, options_.coverageWeight);
+    // The histogram term per member in the distances' units (sigma, as the usage term's).
+    const detail::ColorHistogramCost histogram =
+        histogramWeight_ > 0 ? detail::ColorHistogramCost(image_, analysis_.colorChannels, sources)
+                             : detail::ColorHistogramCost();
+    const float histogramScale =
+        histogram.active() ? histogramWeight_ * detail::UsageMap(window_, sources, 1.0f).scale() : 0.0f;
     const std::uint64_t randomKey =
         hashKey(options_.seed, std::uint64_t(level_), std::uint64_t(scale_), std::uint64_t(iteration) + 0x5e0c);
     std::vector<std::uint8_t> changed(matches.position.size(), 0);
@@ -97,7 +106,11 @@ class Solver {
         }
         uniqueByPixel(candidates);
         auto term = [&](const Vec2f& c) {
-          return usage.active() ? float(members.size()) * usage.cost(nearestPixel(c, width, height)) : 0.0f;
+          if (!usage.active() && !histogram.active()) return 0.0f;
+          const std::int32_t pixel = nearestPixel(c, width, height);
+          const float cost = (usage.active() ? usage.cost(pixel) : 0.0f) +
+                             (histogram.active() ? histogramScale * histogram.cost(pixel) : 0.0f);
+          return float(members.size()) * cost;
         };
         // Sum of the members' color distances (every stride-th member) to the level at c + h d.
         auto distance = [&](const Vec2f& c, float sum, float bound, std::size_t stride) {
@@ -213,6 +226,7 @@ class Solver {
   int level_;
   std::size_t scale_;
   const TextureOptimizationOptions& options_;
+  float histogramWeight_;
   const Image& image_;
   detail::ExemplarWindow window_;
   float h_;
@@ -225,8 +239,8 @@ class Solver {
 void optimizeSurfaceCoordinates(const SurfaceNeighborhoods& neighborhoods, const ExemplarAnalysis& analysis, int level,
                                 std::size_t scale, const TextureOptimizationOptions& options,
                                 std::vector<Vec2f>& coordinates, std::vector<OptimizationIteration>& history,
-                                Progress& progress) {
-  const Solver solver(neighborhoods, analysis, level, scale, options);
+                                Progress& progress, float histogramWeight) {
+  const Solver solver(neighborhoods, analysis, level, scale, options, histogramWeight);
   ContinuousMatches matches(neighborhoods.activeCount());
   int iteration = 0;
   auto match = [&] { return solver.match(coordinates, matches, iteration++); };

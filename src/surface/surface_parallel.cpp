@@ -10,6 +10,7 @@
 #include "texsynth/core/parallel.h"
 #include "texsynth/core/random.h"
 #include "texsynth/core/wrap.h"
+#include "texsynth/image/color_histogram_cost.h"
 #include "texsynth/image/exemplar_usage.h"
 #include "texsynth/image/exemplar_window.h"
 
@@ -132,12 +133,24 @@ double correctSurfaceCoordinates(const SurfaceStencil& stencil, const ExemplarAn
   const detail::ExemplarWindow window(analysis, level, stencil.size, detail::PixelNorm::Euclidean);
   for (int subpass = 0; subpass < subpasses; ++subpass) {
     const std::vector<float> colors = colorsAtCoordinates(image, coordinates);
-    // The usage term in squared units: usageWeight * sigma^2 * (usage - 1) per member.
-    const detail::UsageMap usage(window, pixelsOfCoordinates(coordinates, width, height),
-                                 options.usageWeight > 0 ? 1.0f : 0.0f);
-    const float usageScale = options.usageWeight * usage.scale();
+    // The usage and histogram terms in squared units, per stencil member: usageWeight * sigma^2 *
+    // (usage - 1) and histogramWeight * sigma^2 * (share / exemplar share - 1).
+    const std::vector<std::int32_t> sources = pixelsOfCoordinates(coordinates, width, height);
+    const detail::UsageMap usage(window, sources, 1.0f);
+    const float sigma = usage.scale();
+    const bool histogramActive = options.histogramBand > 0 && options.histogramWeight > 0;
+    const detail::ColorHistogramCost histogram =
+        histogramActive ? detail::ColorHistogramCost(image, analysis.colorChannels, sources)
+                        : detail::ColorHistogramCost();
+    const float usageScale = options.usageWeight * sigma, histogramScale = options.histogramWeight * sigma * sigma;
+    auto usageTerm = [&](const Vec2f& c, std::size_t members) {
+      return options.usageWeight > 0 ? float(members) * usageScale * usage.cost(nearestPixel(c, width, height)) : 0.0f;
+    };
+    // The energies within the histogram band of `e` (infinity stays infinity).
+    auto withinBand = [&](float e) { return e + options.histogramBand * std::abs(e); };
     std::vector<Vec2f> next = coordinates;
     parallelForChunks(0, vertices, 512, [&](std::int64_t begin, std::int64_t end) {
+      std::vector<std::pair<float, Vec2f>> near;
       std::vector<Vec2f> candidates;
       std::vector<std::int32_t> seen;
       for (std::int64_t v = begin; v < end; ++v) {
@@ -159,14 +172,39 @@ double correctSurfaceCoordinates(const SurfaceStencil& stencil, const ExemplarAn
           if (m.dx * m.dx + m.dy * m.dy <= kProposingRadius * kProposingRadius)
             propose(Vec2f(coordinates[std::size_t(m.vertex)].x() - h * m.dx,
                           coordinates[std::size_t(m.vertex)].y() - h * m.dy));
-        float best = std::numeric_limits<float>::infinity();
+        // The energy: stencil distance plus usage term; the least wins, ties keep the earlier.
+        float best = std::numeric_limits<float>::infinity(), least = best;
         Vec2f bestCoordinate = coordinates[std::size_t(v)];
-        for (const Vec2f& c : candidates) {
-          const float term =
-              usage.active() ? usageScale * float(members.size()) * usage.cost(nearestPixel(c, width, height)) : 0.0f;
-          const float sum = stencilDistance(lookup, colors.data(), members, c, h, term, best);
-          if (sum < best) best = sum, bestCoordinate = c;
+        if (!histogram.active()) {
+          for (const Vec2f& c : candidates) {
+            const float sum = stencilDistance(lookup, colors.data(), members, c, h, usageTerm(c, members.size()), best);
+            if (sum < best) best = sum, bestCoordinate = c;
+          }
+          least = best;
+        } else {
+          // Among the candidates within the band of the least energy, the least energy plus
+          // histogram term: the histogram steers only between nearly equal matches.
+          near.clear();
+          for (const Vec2f& c : candidates) {
+            const float bound = withinBand(best);
+            const float sum =
+                stencilDistance(lookup, colors.data(), members, c, h, usageTerm(c, members.size()), bound);
+            if (sum < bound) near.push_back({sum, c});
+            best = std::min(best, sum);
+          }
+          least = best;
+          const float limit = withinBand(best);
+          float chosen = std::numeric_limits<float>::infinity();
+          for (const auto& [sum, c] : near) {
+            if (sum > limit) continue;
+            const float total =
+                sum + float(members.size()) * histogramScale * histogram.cost(nearestPixel(c, width, height));
+            if (total < chosen) chosen = total, best = sum, bestCoordinate = c;
+          }
         }
+        // A move the usage term pays for in full (negative energy: the reward of an under-used
+        // region exceeds the color distance) is not taken where usage is held.
+        if (options.holdUsagePaidMoves && least < 0) bestCoordinate = coordinates[std::size_t(v)];
         next[std::size_t(v)] =
             Vec2f(wrapCoordinate(bestCoordinate.x(), width), wrapCoordinate(bestCoordinate.y(), height));
         distances[std::size_t(v)] = double(best) / double(members.size() * std::size_t(channels));

@@ -46,8 +46,8 @@ struct Fixture {
     hierarchyOptions.levels = options.levels;
     surface = prepareSurface(buildMeshHierarchy(cube, hierarchyOptions, "cube"), {}, options.neighborhoodSizes);
   }
-  SurfaceSynthesisResult run(const TextureOptimizationOptions& options) const {
-    return synthesizeSurface(analyses, surface, options);
+  SurfaceSynthesisResult run(const TextureOptimizationOptions& options, const SurfaceStartOptions& start = {}) const {
+    return synthesizeSurface(analyses, surface, options, noProgress(), start);
   }
 };
 
@@ -78,7 +78,9 @@ TEST(SurfaceSynthesis, EveryVertexGetsAValidSourceAndItsColor) {
 TEST(SurfaceSynthesis, PlainDiscreteEnergyNeverRisesWithinALevelAndSize) {
   TextureOptimizationOptions plain = smallOptions();
   plain.coverageWeight = 0, plain.voteExponent = 0, plain.randomCandidates = 0;  // Han et al.'s energy
-  const SurfaceSynthesisResult result = fixture().run(plain);
+  SurfaceStartOptions start;
+  start.finestRefineHistogramWeight = 0;  // nor the finest level's histogram term
+  const SurfaceSynthesisResult result = fixture().run(plain, start);
   ASSERT_GT(result.history.size(), 1u);
   int lowered = 0;
   for (std::size_t i = 1; i < result.history.size(); ++i) {

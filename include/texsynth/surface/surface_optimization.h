@@ -24,11 +24,13 @@ namespace texsynth {
 // options.neighborhoodSizes[scale]): the matches of the coordinates as they come in, then up to
 // options.maxIterations E+M steps until no match changes. Candidates: the k-coherence sets of
 // `analysis` (analyses.back() of optimizationAnalysisOptions) and options.randomCandidates random
-// positions; options.coverageWeight the usage term, options.voteExponent the vote weights.
-// Appends one OptimizationIteration per M-step. Deterministic for any thread count.
+// positions; options.coverageWeight the usage term, options.voteExponent the vote weights;
+// histogramWeight a color histogram term (image/color_histogram_cost.h) of histogramWeight *
+// sigma * (share / exemplar share - 1) per member, 0 = none. Appends one OptimizationIteration per
+// M-step. Deterministic for any thread count.
 void optimizeSurfaceCoordinates(const SurfaceNeighborhoods& neighborhoods, const ExemplarAnalysis& analysis, int level,
                                 std::size_t scale, const TextureOptimizationOptions& options,
                                 std::vector<Vec2f>& coordinates, std::vector<OptimizationIteration>& history,
-                                Progress& progress);
+                                Progress& progress, float histogramWeight = 0.0f);
 
 }  // namespace texsynth

@@ -37,6 +37,18 @@ namespace texsynth {
 // measures by a few percent on these pairs and keeps a flat-background exemplar's features on
 // thin parts (tests/surface/surface_parallel_test.cpp: 6 passes halve their share). Usage weight
 // 4 against 0 takes the dino's cracked from flatness 0.37 to 0.14 at two passes per level.
+// The finest level's histogram band and hold: the correction passes prefer the background beside
+// thin dark features to the features themselves, so the start empties the histogram's tails (pink
+// marble's veins, brick's mortar, bark's furrows: histogram distance 1.3-3.6 against 2D optimize's
+// 0.5-1.2 on the CGAL cow and dino). An additive histogram term (weight 2-4, every level) halves
+// that but costs 10-25% coherence (leopard, leaves). At the finest level only, with the histogram
+// choosing only between candidates within 10% of the least energy, and with the usage term (noise
+// there, at a few vertices per exemplar pixel) not allowed to move a vertex on its own (it freezes
+// about half of them on bark and the cow), 8 exemplars x cow and dino: histogram within 1.5x 2D's
+// on 12 of 16 pairs (7 before), coherence within 1.3x 2D's measured on a retiled plane on 12 (13
+// before), flatness <= 0.05 on 16 (15). Both are needed: bark / leopard / pink marble on the cow
+// read histogram 0.30 / 0.80 / 1.45 with both, 1.95 / 2.27 / 1.54 with the band alone, 0.78 /
+// 1.14 / 1.46 with the hold alone, 1.29 / 1.49 / 2.11 with neither.
 struct SurfaceParallelOptions {
   std::uint64_t seed = 1;
   int passes = 1;            // correction passes per finer level (L&H 2005: 2)
@@ -44,6 +56,16 @@ struct SurfaceParallelOptions {
   int subpasses = 4;         // vertex classes corrected in turn per pass (L&H: s^2 = 4)
   float jitter = 0.4f;       // r_l: displacement round(h_l r_l xi), xi in [-1, 1]^2, at every finer level
   float usageWeight = 4.0f;  // times sigma^2 (usage - 1) per stencil member; 0 = no usage term
+  // Color histogram matching (image/color_histogram_cost.h): among the candidates whose energy is
+  // within (1 + histogramBand) of the least, the one with the least energy plus histogramWeight *
+  // sigma^2 * (share / exemplar share - 1) per member. 0 = off, as at every level but the finest
+  // in surface synthesis (synthesizeSurface sets it there).
+  float histogramBand = 0.0f;
+  float histogramWeight = 50.0f;
+  // Where the usage term is mostly noise (the finest level: a few vertices per exemplar pixel),
+  // a vertex whose least energy is negative (an under-used region's reward exceeds its color
+  // distance: the move would be the usage term's alone) keeps its coordinate.
+  bool holdUsagePaidMoves = false;
 };
 
 // Random coherent patches: every vertex copies the exemplar around a random pixel of its

@@ -83,6 +83,13 @@ struct SurfaceStartOptions {
   SurfaceParallelOptions parallel;  // its seed is replaced by the synthesis options' seed
   // E+M iterations on top of the start at every level the optimization can run at.
   bool refine = true;
+  // At the finest level only (where thin features live and the histogram is read): the start's
+  // histogram band and whether it holds usage-paid moves (SurfaceParallelOptions), and the weight
+  // of the color histogram term in the refinement's M-step (per member, times sigma;
+  // optimizeSurfaceCoordinates).
+  float finestHistogramBand = 0.1f;
+  bool finestHoldsUsagePaidMoves = true;
+  float finestRefineHistogramWeight = 2.0f;
 };
 
 // Whether the E+M refinement of one level was kept: the start's and the refined state's
