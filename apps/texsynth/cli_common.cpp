@@ -144,8 +144,9 @@ void printJson(const nlohmann::json& document) {
 }
 
 nlohmann::json metricsJson(const QualityMetrics& m) {
-  return {{"coherence", m.coherence},     {"completeness", m.completeness}, {"histogram", m.histogram},
-          {"periodicity", m.periodicity}, {"lattice", m.lattice},           {"sharpness", m.sharpness}};
+  return {{"coherence", m.coherence}, {"coherence_p90", m.coherenceTail}, {"completeness", m.completeness},
+          {"histogram", m.histogram}, {"periodicity", m.periodicity},     {"lattice", m.lattice},
+          {"sharpness", m.sharpness}};
 }
 
 std::string defaultCacheDirectory() {

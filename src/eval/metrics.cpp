@@ -1,7 +1,9 @@
 #include "texsynth/eval/metrics.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <vector>
 
 #include "metrics_detail.h"
 #include "texsynth/core/error.h"
@@ -19,6 +21,16 @@ double rootMeanSquare(const std::vector<PatchMatch>& matches) {
   double sum = 0;
   for (const PatchMatch& match : matches) sum += match.meanSquared;
   return std::sqrt(sum / double(matches.size()));
+}
+
+// The 90th percentile (nearest rank) of the matches' root mean squared differences.
+double tail(const std::vector<PatchMatch>& matches) {
+  if (matches.empty()) return 0;
+  std::vector<double> values(matches.size());
+  for (std::size_t i = 0; i < matches.size(); ++i) values[i] = matches[i].meanSquared;
+  const auto rank = std::ptrdiff_t(std::ceil(0.9 * double(values.size()))) - 1;
+  std::nth_element(values.begin(), values.begin() + rank, values.end());
+  return std::sqrt(values[std::size_t(rank)]);
 }
 
 }  // namespace
@@ -52,7 +64,9 @@ Image toRgb255(const Image& image, const std::string& what, int patchSize) {
 QualityMetrics evaluateRgb255(const PatchIndex& exemplarIndex, const Image& output, const MetricOptions& options) {
   PatchIndex outputIndex(output, options.patchSize);
   QualityMetrics metrics;
-  metrics.coherence = rootMeanSquare(exemplarIndex.nearest(output));
+  const std::vector<PatchMatch> matches = exemplarIndex.nearest(output);
+  metrics.coherence = rootMeanSquare(matches);
+  metrics.coherenceTail = tail(matches);
   metrics.completeness = rootMeanSquare(outputIndex.nearest(exemplarIndex.image()));
   metrics.histogram = histogramDistance(exemplarIndex.image(), output);
   const double exemplarGradient = meanGradientMagnitude(exemplarIndex.image());

@@ -88,7 +88,8 @@ VolumeQuality evaluateVolume(const Image& exemplar, const Volume& volume, const 
   for (int axis = 0; axis < 3; ++axis) {
     const auto axisStart = std::chrono::steady_clock::now();
     const int n = extent(volume, axis);
-    double coherenceSquares = 0, completenessSquares = 0, histogram = 0, periodicity = 0, lattice = 0, sharpness = 0;
+    double coherenceSquares = 0, completenessSquares = 0, histogram = 0, periodicity = 0, lattice = 0, sharpness = 0,
+           tail = 0;
     for (int i = 0; i < slices; ++i) {
       const int index = int(std::floor((i + 0.5) * n / slices));
       // checkVolume made every slice fit the patch and hold finite values.
@@ -96,6 +97,7 @@ VolumeQuality evaluateVolume(const Image& exemplar, const Volume& volume, const 
       QualityMetrics m = eval_detail::evaluateRgb255(exemplarIndex, slice, options);
       progress.advance();
       coherenceSquares += m.coherence * m.coherence;
+      tail += m.coherenceTail;
       completenessSquares += m.completeness * m.completeness;
       histogram += m.histogram;
       sharpness += m.sharpness;
@@ -104,6 +106,7 @@ VolumeQuality evaluateVolume(const Image& exemplar, const Volume& volume, const 
     }
     QualityMetrics& a = quality.axis[axis];
     a.coherence = std::sqrt(coherenceSquares / slices);
+    a.coherenceTail = tail / slices;
     a.completeness = std::sqrt(completenessSquares / slices);
     a.histogram = histogram / slices;
     a.sharpness = sharpness / slices;
@@ -115,6 +118,7 @@ VolumeQuality evaluateVolume(const Image& exemplar, const Volume& volume, const 
   QualityMetrics& mean = quality.mean;
   for (const QualityMetrics& a : quality.axis) {
     mean.coherence += a.coherence / 3;
+    mean.coherenceTail += a.coherenceTail / 3;
     mean.completeness += a.completeness / 3;
     mean.histogram += a.histogram / 3;
     mean.sharpness += a.sharpness / 3;

@@ -35,6 +35,26 @@ TEST(EvaluateImage, NoiseScoresWorseThanAShiftedCrop) {
   EXPECT_GT(noisy.histogram, shifted.histogram);
 }
 
+TEST(EvaluateImage, TheCoherenceTailSeesASeamTheMeanHides) {
+  Image big = makeTestPattern(120, 120, 4);
+  const Image exemplar = big.crop(0, 0, 64, 64);
+  EXPECT_EQ(evaluateImage(exemplar, exemplar).coherenceTail, 0.0);
+  // Two crops of the same texture joined along a vertical cut: only the patches across the cut
+  // (6 of 58 columns of patch positions) are off.
+  Image seamed = big.crop(0, 0, 64, 64);
+  const Image other = big.crop(37, 21, 64, 64);
+  for (int y = 0; y < 64; ++y)
+    for (int x = 32; x < 64; ++x)
+      for (int c = 0; c < seamed.channels; ++c) seamed.at(x, y, c) = other.at(x, y, c);
+  const QualityMetrics m = evaluateImage(exemplar, seamed);
+  EXPECT_GT(m.coherenceTail, 0.0);
+  EXPECT_GT(m.coherenceTail, 1.3 * m.coherence) << "the tail " << m.coherenceTail << ", the mean " << m.coherence;
+  // Noise: every patch is about as far off, the tail is near the mean.
+  const QualityMetrics noisy = evaluateImage(exemplar, test::noise(64, 64, 8));
+  EXPECT_LT(noisy.coherenceTail, 1.2 * noisy.coherence)
+      << "the tail " << noisy.coherenceTail << ", the mean " << noisy.coherence;
+}
+
 TEST(EvaluateImage, ShiftOfTenIsHistogramTen) {
   Image exemplar = test::scaled(makeTestPattern(48, 48), 235.0f / 255.0f);
   Image output = exemplar;

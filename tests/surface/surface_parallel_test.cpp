@@ -194,17 +194,19 @@ double histogramOf(const Image& exemplar, std::span<const Vec3f> colors) {
 }
 
 TEST(SurfaceParallel, TheFinestLevelsHistogramBandKeepsThinVeins) {
-  // The band alone against neither band nor hold (the hold's effect is measured on GIMP
-  // exemplars, surface_parallel.h; on this one it is about neutral).
+  // The band alone against neither band nor hold. (The hold is there for GIMP exemplars,
+  // surface_parallel.h; on this synthetic one it does not help: at 8000 vertices with E+M,
+  // histogram distance 0.0052 with the band alone, 0.0081 with the hold too.)
   const Image exemplar = veinedExemplar();
   SurfaceStartOptions plainOptions;
   plainOptions.finestHistogramBand = 0;
   plainOptions.finestHoldsUsagePaidMoves = false;
   plainOptions.finestRefineHistogramWeight = 0;
+  plainOptions.refine = false;  // the start alone (cheaper, and the band is the start's)
   SurfaceStartOptions bandOptions = plainOptions;
   bandOptions.finestHistogramBand = SurfaceStartOptions{}.finestHistogramBand;
-  const Synthesized plain(exemplar, test::icosphere(3), 3000, plainOptions);
-  const Synthesized band(exemplar, test::icosphere(3), 3000, bandOptions);
+  const Synthesized plain(exemplar, test::icosphere(3), 1600, plainOptions);
+  const Synthesized band(exemplar, test::icosphere(3), 1600, bandOptions);
   const double before = histogramOf(exemplar, plain.result.colors), after = histogramOf(exemplar, band.result.colors);
   EXPECT_LT(after, 0.85 * before) << "histogram distance " << before << " without, " << after << " with the band";
   // It steers only between near-equal matches: the result stays as coherent.

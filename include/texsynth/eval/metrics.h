@@ -5,6 +5,8 @@
 //
 //   coherence     RMS over output patches of the mean squared difference per value to the
 //                 nearest exemplar patch (low: the output invents nothing).
+//   coherence tail the 90th percentile over output patches of that difference's root mean
+//                 square: where seams live (a few straight cuts hardly move the mean).
 //   completeness  the same from exemplar patches to output patches (low: nothing is missing).
 //   histogram     mean over R, G, B of the 1D Wasserstein-1 distance of the value distributions.
 //   periodicity   share of sampled output patches that repeat at the single most common offset
@@ -38,7 +40,8 @@ struct MetricOptions {
 
 struct QualityMetrics {
   double coherence = 0, completeness = 0, histogram = 0, periodicity = 0, lattice = 0, sharpness = 0;
-  double seconds = 0;  // wall time spent computing these metrics
+  double coherenceTail = 0;  // the 90th percentile of per-patch coherence
+  double seconds = 0;        // wall time spent computing these metrics
 };
 
 // Metrics of `output` against `exemplar`. Any channel count is converted to RGB first
@@ -57,8 +60,8 @@ struct VolumeQuality {
 // borders. Slice image axes (u right, v down): normal x -> (y, z); normal y -> (x, z);
 // normal z -> (x, y); so a volume made by stacking the exemplar along z has z-slices equal to
 // the exemplar. Per axis, coherence and completeness are the RMS over all patches of all its
-// slices (each slice has as many patches), histogram, periodicity, lattice and sharpness the mean
-// over its slices.
+// slices (each slice has as many patches), coherence tail, histogram, periodicity, lattice and
+// sharpness the mean over its slices.
 // Before any work, throws ParameterError for bad options, slicesPerAxis above an extent
 // ("slicesPerAxis"), a patch larger than the smallest slice ("patchSize", naming the slices'
 // size), a non-finite voxel ("volume") or an exemplar smaller than the patch ("exemplar").
