@@ -25,7 +25,8 @@ void boxBlurAxis(std::vector<float>& values, int width, int height, int radius, 
   }
 }
 
-// Mean Euclidean distance of the level's colors from their mean color.
+}  // namespace
+
 float colorSpread(const ExemplarWindow& grid) {
   const int c = grid.channels();
   const std::size_t pixels = std::size_t(grid.exemplarWidth) * grid.exemplarHeight;
@@ -44,8 +45,6 @@ float colorSpread(const ExemplarWindow& grid) {
   }
   return float(spread / double(pixels));
 }
-
-}  // namespace
 
 UsageMap::UsageMap(const ExemplarWindow& grid, std::span<const std::int32_t> sources, float weight) : weight_(weight) {
   if (weight_ <= 0) return;

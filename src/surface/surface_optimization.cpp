@@ -76,8 +76,7 @@ class Solver {
     const detail::ColorHistogramCost histogram =
         histogramWeight_ > 0 ? detail::ColorHistogramCost(image_, analysis_.colorChannels, sources)
                              : detail::ColorHistogramCost();
-    const float histogramScale =
-        histogram.active() ? histogramWeight_ * detail::UsageMap(window_, sources, 1.0f).scale() : 0.0f;
+    const float histogramScale = histogram.active() ? histogramWeight_ * detail::colorSpread(window_) : 0.0f;
     const std::uint64_t randomKey =
         hashKey(options_.seed, std::uint64_t(level_), std::uint64_t(scale_), std::uint64_t(iteration) + 0x5e0c);
     std::vector<std::uint8_t> changed(matches.position.size(), 0);

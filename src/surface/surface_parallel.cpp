@@ -136,8 +136,8 @@ double correctSurfaceCoordinates(const SurfaceStencil& stencil, const ExemplarAn
     // The usage and histogram terms in squared units, per stencil member: usageWeight * sigma^2 *
     // (usage - 1) and histogramWeight * sigma^2 * (share / exemplar share - 1).
     const std::vector<std::int32_t> sources = pixelsOfCoordinates(coordinates, width, height);
-    const detail::UsageMap usage(window, sources, 1.0f);
-    const float sigma = usage.scale();
+    const detail::UsageMap usage(window, sources, options.usageWeight > 0 ? 1.0f : 0.0f);
+    const float sigma = detail::colorSpread(window);
     const bool histogramActive = options.histogramBand > 0 && options.histogramWeight > 0;
     const detail::ColorHistogramCost histogram =
         histogramActive ? detail::ColorHistogramCost(image, analysis.colorChannels, sources)

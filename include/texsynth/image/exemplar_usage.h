@@ -14,6 +14,10 @@
 
 namespace texsynth::detail {
 
+// sigma: the mean Euclidean distance of the level's colors from their mean color, the unit the
+// usage and histogram terms speak in whatever the exemplar's contrast.
+float colorSpread(const ExemplarWindow& grid);
+
 class UsageMap {
  public:
   UsageMap() = default;
