@@ -102,7 +102,7 @@ Image synthesizeOptimized(const Image& exemplar, const ImageArgs& args, int widt
     ParallelSynthesisOptions parallel;
     parallel.seed = globals.seed;
     const ExemplarAnalysis analysis = analyzeExemplarCached(exemplar, {}, defaultCacheDirectory(), *progress);
-    start = synthesizeParallelCoordinates(analysis, parallel, 0, 0, width, height, *progress);
+    start = parallelOptimizationStart(analysis, parallel, analyses, options, width, height, *progress);
   }
   if (args.start == "pixels") options.start = OptimizationStart::RandomPixels;
   TextureOptimizationResult result =
@@ -121,6 +121,7 @@ Image synthesizeOptimized(const Image& exemplar, const ImageArgs& args, int widt
   report["solver"] = args.solver;
   report["levels"] = options.levels;
   report["iterations"] = iterations;
+  report["undone_levels"] = result.undoneLevels;
   if (!result.history.empty()) report["final_energy"] = result.history.back().energy;
   return result.colors;
 }

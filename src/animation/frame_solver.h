@@ -44,7 +44,7 @@ FrameSolution solveFrame(DomainFor&& domainFor, std::span<const ExemplarAnalysis
     for (int iteration = 0; iteration < animation.iterations; ++iteration) {
       const UsageMap usage(window, solution.sources, synthesis.coverageWeight);
       const DiscreteStepOptions step{usage.active() ? &usage : nullptr, animation.randomCandidates,
-                                     hashKey(key, std::uint64_t(scale), std::uint64_t(iteration)), true};
+                                     hashKey(key, std::uint64_t(scale), std::uint64_t(iteration))};
       matchDiscrete(domain, window, analyses[scale].levels[std::size_t(level)], similarity, level, solution.sources,
                     step, matches);
       solution.sources = updateDiscrete(domain, window, similarity, level, solution.sources, synthesis.voteExponent,

@@ -56,7 +56,7 @@ std::vector<std::int32_t> ImageAnimator::staticSynthesis(std::uint64_t seed, Pro
   if (parallelAnalysis_) {
     ParallelSynthesisOptions parallel;
     parallel.seed = seed;
-    start = synthesizeParallelCoordinates(*parallelAnalysis_, parallel, 0, 0, width_, height_, progress);
+    start = parallelOptimizationStart(*parallelAnalysis_, parallel, analyses_, options, width_, height_, progress);
   }
   const TextureOptimizationResult result =
       optimizeTexture(analyses_, options, width_, height_, progress, start ? &*start : nullptr);

@@ -56,28 +56,44 @@ int firstSynthesizedLevel(const ExemplarAnalysis& analysis, float coarsestFootpr
   return analysis.levelCount() - 1;
 }
 
-SourceCoordinates synthesizeParallelCoordinates(const ExemplarAnalysis& analysis,
-                                                const ParallelSynthesisOptions& options, int x0, int y0, int w, int h,
-                                                Progress& progress) {
+SourceCoordinates synthesizeParallelLevelCoordinates(const ExemplarAnalysis& analysis,
+                                                     const ParallelSynthesisOptions& options, int level, int x0, int y0,
+                                                     int w, int h, Progress& progress) {
   validate(analysis, options, x0, y0, w, h);
   const int levels = analysis.levelCount();
+  if (level < 0 || level >= levels)
+    throw ParameterError("level", "must be in 0.." + std::to_string(levels - 1) + ", got " + std::to_string(level));
   const int first = firstSynthesizedLevel(analysis, options.coarsestFootprint);
+  if (level < first) {
+    // Synthesis starts finer than asked: the finer grid read every 2^(first - level) pixels.
+    const int step = 1 << (first - level);
+    const SourceCoordinates fine = synthesizeParallelLevelCoordinates(analysis, options, first, x0 * step, y0 * step,
+                                                                      (w - 1) * step + 1, (h - 1) * step + 1, progress);
+    SourceCoordinates coarse(x0, y0, w, h);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const std::int32_t* source = fine.at(fine.x0 + x * step, fine.y0 + y * step);
+        std::int32_t* target = coarse.at(x0 + x, y0 + y);
+        target[0] = source[0], target[1] = source[1];
+      }
+    return coarse;
+  }
   // From random coordinates, the first level needs more passes to grow coherent patches.
-  auto passes = [&](int level) {
-    return level == first && options.coarsestFootprint > 0 && options.passes > 0
+  auto passes = [&](int l) {
+    return l == first && options.coarsestFootprint > 0 && options.passes > 0
                ? std::max(options.startPasses, options.passes)
                : options.passes;
   };
-  auto margin = [&](int level) { return correctionMargin(analysis, level, passes(level), options.subpassGrid); };
+  auto margin = [&](int l) { return correctionMargin(analysis, l, passes(l), options.subpassGrid); };
 
-  // corrected[l]: the region level l must deliver; the finest delivers the window itself.
-  std::vector<Region> corrected(static_cast<std::size_t>(levels));
-  corrected[levels - 1] = {x0, y0, w, h};
-  for (int l = levels - 1; l > first; --l) corrected[l - 1] = corrected[l].grown(margin(l)).parents();
+  // corrected[l]: the region level l must deliver; the asked level delivers the window itself.
+  std::vector<Region> corrected(static_cast<std::size_t>(level + 1));
+  corrected[level] = {x0, y0, w, h};
+  for (int l = level; l > first; --l) corrected[l - 1] = corrected[l].grown(margin(l)).parents();
 
-  progress.begin("parallel synthesis", levels - first);
+  progress.begin("parallel synthesis", level + 1 - first);
   SourceCoordinates coords;
-  for (int l = first; l < levels; ++l) {
+  for (int l = first; l <= level; ++l) {
     const int spacing = analysis.levels[l].spacing;
     const Region start = corrected[l].grown(margin(l));
     if (l > first)
@@ -97,6 +113,13 @@ SourceCoordinates synthesizeParallelCoordinates(const ExemplarAnalysis& analysis
   }
   progress.end();
   return coords;
+}
+
+SourceCoordinates synthesizeParallelCoordinates(const ExemplarAnalysis& analysis,
+                                                const ParallelSynthesisOptions& options, int x0, int y0, int w, int h,
+                                                Progress& progress) {
+  validate(analysis, options, x0, y0, w, h);
+  return synthesizeParallelLevelCoordinates(analysis, options, analysis.levelCount() - 1, x0, y0, w, h, progress);
 }
 
 Image lookupColors(const Image& image, const SourceCoordinates& coords, int channels) {

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cmath>
+#include <optional>
 #include <set>
 
 #include "image_test_support.h"
@@ -15,6 +16,8 @@
 #include "texsynth/core/random.h"
 #include "texsynth/eval/metrics.h"
 #include "texsynth/exemplar/analysis.h"
+#include "texsynth/image/flat_patch_share.h"
+#include "texsynth/image/optimization_grid.h"
 
 namespace texsynth {
 namespace {
@@ -50,11 +53,13 @@ const Fixture& discreteFixture() {
   return fixture;
 }
 
-// Han et al.'s plain energy: no usage term, equal votes, k-coherence candidates only.
+// Han et al.'s plain energy: no usage term, equal votes, k-coherence candidates only, on a
+// fixed lattice of active neighborhoods (a moved one measures other neighborhoods).
 const Fixture& plainDiscreteFixture() {
   static const Fixture fixture = [] {
     Fixture plain(OptimizationSolver::Discrete);
     plain.options.coverageWeight = 0, plain.options.voteExponent = 0, plain.options.randomCandidates = 0;
+    plain.options.movingLattice = false;
     return plain;
   }();
   return fixture;
@@ -152,13 +157,28 @@ TEST(TextureOptimization, KeepsSparseFeaturesOnAFlatBackground) {
   std::printf("dark share: exemplar %.3f, output %.3f\n", darkShare(exemplar), kept);
 }
 
+// A GIMP pattern cropped to at most `side` pixels, the solver's analyses for the default options
+// and a parallel start of an `output`-pixel square: what the real-data tests share. Empty
+// without gimp-data.
+struct RealCase {
+  Image exemplar;
+  std::vector<ExemplarAnalysis> analyses;
+  SourceCoordinates start;
+};
+std::optional<RealCase> realCase(const char* pattern, int side, int output) {
+  auto path = gimpPattern(pattern);
+  if (!path) return std::nullopt;
+  RealCase real{test::loadPatternRgb(*path, side), {}, {}};
+  real.analyses = analysesFor(real.exemplar, TextureOptimizationOptions{});
+  real.start = synthesizeParallelCoordinates(analyzeExemplar(real.exemplar), {}, 0, 0, output, output);
+  return real;
+}
+
 TEST(TextureOptimization, UsageTermAndWeightedVotesKeepTheExemplarComplete) {
-  auto path = gimpPattern("Stone/rock.pat");
-  TS_REQUIRE_DATA(path);
-  const Image exemplar = test::loadPatternRgb(*path, 1024);
+  const std::optional<RealCase> real = realCase("Stone/rock.pat", 1024, 160);
+  TS_REQUIRE_DATA(real);
+  const auto& [exemplar, analyses, start] = *real;
   TextureOptimizationOptions options;
-  const std::vector<ExemplarAnalysis> analyses = analysesFor(exemplar, options);
-  const SourceCoordinates start = synthesizeParallelCoordinates(analyzeExemplar(exemplar), {}, 0, 0, 160, 160);
   TextureOptimizationOptions plain = options;
   plain.coverageWeight = 0, plain.voteExponent = 0, plain.randomCandidates = 0;
   const MetricOptions metrics{.periodicitySamples = 100};
@@ -172,6 +192,71 @@ TEST(TextureOptimization, UsageTermAndWeightedVotesKeepTheExemplarComplete) {
   EXPECT_GT(full.sharpness, 0.9);
   std::printf("rock completeness: with %.2f, without %.2f; coherence %.2f vs %.2f\n", full.completeness,
               without.completeness, full.coherence, without.coherence);
+}
+
+// Moving the lattice of active neighborhoods carries every match along: on an output that is a
+// coherent copy of the exemplar, the moved neighborhoods still match exactly where their moved
+// match is an allowed centre, and the offsets stay inside the stride.
+TEST(TextureOptimization, MovingTheLatticeCarriesMatchesAlong) {
+  const Fixture& fixture = discreteFixture();
+  const ExemplarAnalysis& analysis = fixture.analyses.back();
+  const int level = analysis.levelCount() - 1, side = 64;
+  detail::OptimizationGrid grid(analysis, level, side, side, 9, detail::PixelNorm::Euclidean);
+  ASSERT_EQ(grid.stride, 2);
+  std::vector<std::int32_t> copy(std::size_t(side) * side);
+  for (int y = 0; y < side; ++y)
+    for (int x = 0; x < side; ++x) copy[std::size_t(y) * side + x] = analysis.pixelIndex(x, y);
+  std::vector<float> query(std::size_t(grid.window.dimension()));
+  std::vector<int> columns(std::size_t(grid.window.size));
+  auto colorOf = [&](std::int64_t sample) { return grid.window.exemplarColor(copy[std::size_t(sample)]); };
+  for (std::uint64_t key = 1; key <= 6; ++key) {
+    grid.offsetX = grid.offsetY = 0;
+    detail::Matches matches(grid.activeCount());
+    for (std::int64_t a = 0; a < grid.activeCount(); ++a)  // each neighborhood's own source
+      matches.pixel[std::size_t(a)] =
+          copy[std::size_t((a / grid.activeWidth()) * grid.stride * side + (a % grid.activeWidth()) * grid.stride)];
+    grid.moveLattice(key, matches);
+    ASSERT_TRUE(grid.offsetX >= 0 && grid.offsetX < grid.stride && grid.offsetY >= 0 && grid.offsetY < grid.stride);
+    int exact = 0, inside = 0;
+    for (std::int64_t a = 0; a < grid.activeCount(); ++a) {
+      const int x = int(a % grid.activeWidth()) * grid.stride + grid.offsetX;
+      const int y = int(a / grid.activeWidth()) * grid.stride + grid.offsetY;
+      const std::int32_t own = copy[std::size_t(y % side) * side + std::size_t(x % side)];
+      if (!grid.window.isAllowedCentre(own) || !grid.window.isAllowedCentre(matches.pixel[std::size_t(a)])) continue;
+      ++inside;
+      grid.gather(a, colorOf, query.data());
+      exact += matches.pixel[std::size_t(a)] == own &&
+               grid.window.distance(query.data(), own, 1e30f, columns.data()) == 0.0f;
+    }
+    EXPECT_GT(inside, grid.activeCount() / 2);
+    EXPECT_EQ(exact, inside) << "key " << key;
+  }
+}
+
+// GIMP cracked, thin dark cracks and fine relief on a flat gray: every E+M level flattens it
+// (flat share 0.14 -> 0.73 at the coarsest), and without the guard most of the output ends up
+// one gray. With it, the output is never flatter than the start it was given, plus the guard's
+// tolerance.
+TEST(TextureOptimization, CollapseGuardKeepsAFlatBackgroundsFeatures) {
+  const std::optional<RealCase> real = realCase("Stone/cracked.pat", 128, 96);
+  TS_REQUIRE_DATA(real);
+  const auto& [exemplar, analyses, start] = *real;
+  const detail::FlatPatchShare flatness(analyses.back().levels.back(), analyses.back().colorChannels);
+  const TextureOptimizationOptions guarded;
+  TextureOptimizationOptions unguarded;
+  unguarded.collapseTolerance = 1;
+  auto flatShare = [&](const SourceCoordinates& coords) {
+    return flatness.of(coords.pixelIndices(exemplar.width), coords.width, coords.height);
+  };
+  const TextureOptimizationResult withGuard = optimizeTexture(analyses, guarded, 96, 96, noProgress(), &start);
+  const TextureOptimizationResult without = optimizeTexture(analyses, unguarded, 96, 96, noProgress(), &start);
+  const double startShare = flatShare(start);
+  EXPECT_GT(flatShare(without.coords), startShare + 0.15) << "the collapse this guards against did not happen";
+  EXPECT_EQ(without.undoneLevels, 0);
+  EXPECT_LE(flatShare(withGuard.coords), startShare + guarded.collapseTolerance);
+  EXPECT_GT(withGuard.undoneLevels, 0);
+  std::printf("cracked flat share: start %.2f, guarded %.2f (%d levels undone), unguarded %.2f\n", startShare,
+              flatShare(withGuard.coords), withGuard.undoneLevels, flatShare(without.coords));
 }
 
 TEST(TextureOptimization, LeastSquaresBlendsAndHasNoCoordinates) {
@@ -228,6 +313,8 @@ TEST(TextureOptimization, RejectsBadOptions) {
   test::expectParameterError([&] { run(o); }, "voteExponent");
   o = fixture.options, o.randomCandidates = -1;
   test::expectParameterError([&] { run(o); }, "randomCandidates");
+  o = fixture.options, o.collapseTolerance = std::nan("");
+  test::expectParameterError([&] { run(o); }, "collapseTolerance");
   const SourceCoordinates small(0, 0, 8, 16);
   test::expectParameterError([&] { optimizeTexture(fixture.analyses, fixture.options, 16, 16, noProgress(), &small); },
                              "start");

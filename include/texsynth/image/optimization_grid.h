@@ -74,6 +74,20 @@ struct OptimizationGrid {
     }
   }
 
+  // Moves the centres' lattice to the offset in [0, stride)^2 hashed from `key` and carries each
+  // match along (a neighborhood moved by (dx, dy) keeps the exemplar neighborhood moved by the
+  // same), so that the patch borders the E-step's votes leave do not line up iteration after
+  // iteration into straight seams.
+  void moveLattice(std::uint64_t key, Matches& matches) {
+    const int x = int(uniformBelow(key, std::uint32_t(stride))),
+              y = int(uniformBelow(mix64(key), std::uint32_t(stride)));
+    const int dx = x - offsetX, dy = y - offsetY;
+    if (dx == 0 && dy == 0) return;
+    for (std::int32_t& match : matches.pixel)
+      if (match >= 0) match = window.allowedCentre(window.shifted(match, dx, dy));
+    offsetX = x, offsetY = y;
+  }
+
   static int floorDivide(int a, int b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
   // A centre plus an offset of at most the radius (plus the lattice offset) around a side:
   // one compare where the side is wider than that, a division otherwise (tiny outputs).

@@ -87,6 +87,14 @@ SourceCoordinates synthesizeParallelCoordinates(const ExemplarAnalysis& analysis
                                                 const ParallelSynthesisOptions& options, int x0, int y0, int w, int h,
                                                 Progress& progress = noProgress());
 
+// The same at a coarser `level` (0 = coarsest), on that level's own grid (pixel p of level l
+// is the parent of the finer level's 2p and 2p + 1): what the finer levels would upsample, at a
+// fraction of the cost. Below the level synthesis starts at (firstSynthesizedLevel), that
+// level read every 2^(difference) pixels. Also throws ParameterError("level").
+SourceCoordinates synthesizeParallelLevelCoordinates(const ExemplarAnalysis& analysis,
+                                                     const ParallelSynthesisOptions& options, int level, int x0, int y0,
+                                                     int w, int h, Progress& progress = noProgress());
+
 // The same, returning colors (the exemplar's channels, without the feature channel).
 Image synthesizeParallel(const ExemplarAnalysis& analysis, const ParallelSynthesisOptions& options, int x0, int y0,
                          int w, int h, Progress& progress = noProgress());
