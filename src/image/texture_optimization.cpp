@@ -298,7 +298,7 @@ TextureOptimizationResult optimizeTexture(std::span<const ExemplarAnalysis> anal
     } else {
       // The collapse guard: a level whose E+M steps leave it flatter than they found it is
       // undone (its start kept). The large neighborhood alone often flattens a coarse level that
-      // the small one then restores (GIMP rock, level 1: flat share 0.09, 0.39, then 0.16), so
+      // the small one then restores (GIMP rock, coarsest level: flat share 0.09, 0.39, then 0.16), so
       // the guard judges the level as a whole.
       const detail::FlatPatchShare flatness(base.levels[std::size_t(level)], base.colorChannels);
       const SourceCoordinates before = state.coords;
