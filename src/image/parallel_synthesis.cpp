@@ -118,7 +118,7 @@ SourceCoordinates synthesizeParallelLevelCoordinates(const ExemplarAnalysis& ana
 SourceCoordinates synthesizeParallelCoordinates(const ExemplarAnalysis& analysis,
                                                 const ParallelSynthesisOptions& options, int x0, int y0, int w, int h,
                                                 Progress& progress) {
-  validate(analysis, options, x0, y0, w, h);
+  // synthesizeParallelLevelCoordinates validates (an empty analysis before its level count is read).
   return synthesizeParallelLevelCoordinates(analysis, options, analysis.levelCount() - 1, x0, y0, w, h, progress);
 }
 
