@@ -13,47 +13,39 @@ namespace {
 
 constexpr int kSampleStep = 2;
 
-// Root mean squared deviation from their mean of the colors colorAt(dx, dy), |dx|, |dy| <= r.
-template <class ColorAt>
-double deviation(int radius, int channels, ColorAt&& colorAt) {
-  double sum[4] = {0, 0, 0, 0}, squares = 0;
-  int count = 0;
-  for (int dy = -radius; dy <= radius; ++dy)
-    for (int dx = -radius; dx <= radius; ++dx, ++count) {
-      const float* color = colorAt(dx, dy);
-      for (int c = 0; c < channels; ++c) sum[c] += color[c], squares += double(color[c]) * color[c];
-    }
-  double meanSquares = 0;
-  for (int c = 0; c < channels; ++c) meanSquares += (sum[c] / count) * (sum[c] / count);
-  return std::sqrt(std::max(0.0, squares / count - meanSquares));
-}
-
 }  // namespace
 
-FlatPatchShare::FlatPatchShare(const ExemplarLevel& level, int colorChannels, int size)
-    : level_(level), channels_(std::clamp(colorChannels, 1, std::min(4, level.image.channels))), radius_(size / 2) {
+double flatPatchThreshold(const ExemplarLevel& level, int channels, int size) {
   const Image& image = level.image;
-  const int h = level.spacing;
+  const int h = level.spacing, radius = size / 2, side = 2 * radius + 1;
   std::vector<double> deviations;
   for (int y = 0; y < image.height; y += kSampleStep)
     for (int x = 0; x < image.width; x += kSampleStep)
-      deviations.push_back(deviation(radius_, channels_, [&](int dx, int dy) {
-        return image.pixel(wrapIndex(x + h * dx, image.width), wrapIndex(y + h * dy, image.height));
+      deviations.push_back(patchDeviation(side * side, channels, [&](int i) {
+        return image.pixel(wrapIndex(x + h * (i % side - radius), image.width),
+                           wrapIndex(y + h * (i / side - radius), image.height));
       }));
   const auto tenth = deviations.begin() + std::ptrdiff_t(deviations.size() / 10);
   std::nth_element(deviations.begin(), tenth, deviations.end());
-  threshold_ = *tenth;
+  return *tenth;
 }
+
+FlatPatchShare::FlatPatchShare(const ExemplarLevel& level, int colorChannels, int size)
+    : level_(level),
+      channels_(std::clamp(colorChannels, 1, std::min(4, level.image.channels))),
+      radius_(size / 2),
+      threshold_(flatPatchThreshold(level, channels_, size)) {}
 
 double FlatPatchShare::of(std::span<const std::int32_t> sources, int width, int height) const {
   const Image& image = level_.image;
-  const int rows = (height + kSampleStep - 1) / kSampleStep;
+  const int rows = (height + kSampleStep - 1) / kSampleStep, side = 2 * radius_ + 1;
   std::vector<int> flatPerRow(static_cast<std::size_t>(rows), 0);
   parallelForChunks(0, rows, 8, [&](std::int64_t begin, std::int64_t end) {
     for (std::int64_t row = begin; row < end; ++row) {
       const int y = int(row) * kSampleStep;
       for (int x = 0; x < width; x += kSampleStep) {
-        const double d = deviation(radius_, channels_, [&](int dx, int dy) {
+        const double d = patchDeviation(side * side, channels_, [&](int i) {
+          const int dx = i % side - radius_, dy = i / side - radius_;
           const std::int32_t source = sources[std::size_t(wrapIndex(y + dy, height)) * std::size_t(width) +
                                               std::size_t(wrapIndex(x + dx, width))];
           return image.pixels.data() + std::size_t(source) * std::size_t(image.channels);

@@ -5,10 +5,9 @@
 #include <cmath>
 #include <vector>
 
-#include "surface_patch_statistics.h"
 #include "texsynth/core/parallel.h"
-#include "texsynth/core/wrap.h"
 #include "texsynth/eval/histogram_distance.h"
+#include "texsynth/image/flat_patch_share.h"
 #include "texsynth/surface/surface_parallel.h"
 
 namespace texsynth {
@@ -16,40 +15,22 @@ namespace texsynth {
 SurfaceLevelMeasures measureSurfaceLevel(const SurfaceStencil& stencil, const ExemplarLevel& level,
                                          std::span<const Vec2f> coordinates) {
   const Image& image = level.image;
-  const int channels = image.channels, h = level.spacing, radius = stencil.size / 2;
+  const int channels = image.channels;
   std::vector<float> colors(coordinates.size() * std::size_t(channels));
   const std::vector<std::int32_t> pixels = pixelsOfCoordinates(coordinates, image.width, image.height);
   for (std::size_t v = 0; v < pixels.size(); ++v)
     std::copy_n(image.pixels.data() + std::size_t(pixels[v]) * channels, channels, colors.data() + v * channels);
 
-  // The exemplar's neighbourhoods of the stencil's size, h apart, at every other pixel.
-  std::vector<double> exemplarSpread;
-  std::vector<float> patch;
-  for (int y = 0; y < image.height; y += 2)
-    for (int x = 0; x < image.width; x += 2) {
-      patch.clear();
-      for (int dy = -radius; dy <= radius; ++dy)
-        for (int dx = -radius; dx <= radius; ++dx) {
-          const float* p = image.pixel(wrapIndex(x + dx * h, image.width), wrapIndex(y + dy * h, image.height));
-          patch.insert(patch.end(), p, p + channels);
-        }
-      exemplarSpread.push_back(surface_detail::patchDeviation(patch.data(), int(patch.size()) / channels, channels));
-    }
-  const std::size_t tenth = exemplarSpread.size() / 10;
-  std::nth_element(exemplarSpread.begin(), exemplarSpread.begin() + std::ptrdiff_t(tenth), exemplarSpread.end());
-  const double threshold = exemplarSpread[tenth];
+  // Flat: below the exemplar level's 10th-percentile neighbourhood of the stencil's size.
+  const double threshold = detail::flatPatchThreshold(level, channels, stencil.size);
 
   std::vector<std::uint8_t> flat(coordinates.size(), 0);
   parallelForChunks(0, std::int64_t(coordinates.size()), 4096, [&](std::int64_t begin, std::int64_t end) {
-    std::vector<float> members;
     for (std::int64_t v = begin; v < end; ++v) {
-      members.clear();
-      for (const NeighborhoodMember& m : stencil.of(std::size_t(v))) {
-        const float* color = colors.data() + std::size_t(m.vertex) * channels;
-        members.insert(members.end(), color, color + channels);
-      }
-      flat[std::size_t(v)] =
-          surface_detail::patchDeviation(members.data(), int(members.size()) / channels, channels) < threshold;
+      const auto members = stencil.of(std::size_t(v));
+      flat[std::size_t(v)] = detail::patchDeviation(int(members.size()), channels, [&](int i) {
+                               return colors.data() + std::size_t(members[std::size_t(i)].vertex) * channels;
+                             }) < threshold;
     }
   });
   SurfaceLevelMeasures measures;

@@ -22,20 +22,6 @@ void copyPatch(const Image& image, int patchSize, int x, int y, float* out) {
 
 }  // namespace
 
-double patchDeviation(const float* values, int pixels, int channels) {
-  std::vector<double> mean(static_cast<std::size_t>(channels), 0.0);
-  for (int p = 0; p < pixels; ++p)
-    for (int c = 0; c < channels; ++c) mean[std::size_t(c)] += values[p * channels + c];
-  for (double& m : mean) m /= pixels;
-  double sum = 0;
-  for (int p = 0; p < pixels; ++p)
-    for (int c = 0; c < channels; ++c) {
-      const double diff = double(values[p * channels + c]) - mean[std::size_t(c)];
-      sum += diff * diff;
-    }
-  return std::sqrt(sum / (double(channels) * pixels));
-}
-
 double flatnessThreshold(const Image& exemplar255, int patchSize) {
   const int columns = exemplar255.width - patchSize + 1, rows = exemplar255.height - patchSize + 1;
   const int pixels = patchSize * patchSize;
@@ -57,7 +43,7 @@ double flatnessThreshold(const Image& exemplar255, int patchSize) {
           for (int c = 0; c < 3; ++c)
             out[c] = (1 - fy) * ((1 - fx) * p00[c] + fx * p10[c]) + fy * ((1 - fx) * p01[c] + fx * p11[c]);
         }
-      deviations[std::size_t(y) * columns + x] = patchDeviation(patch.data(), pixels);
+      deviations[std::size_t(y) * columns + x] = rgbPatchDeviation(patch.data(), pixels);
     }
   });
   const auto tenth = deviations.begin() + std::ptrdiff_t(deviations.size() / 10);

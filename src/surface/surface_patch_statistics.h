@@ -9,13 +9,14 @@
 
 #include "texsynth/core/image.h"
 #include "texsynth/eval/patch_vector_index.h"
+#include "texsynth/image/flat_patch_share.h"
 
 namespace texsynth::surface_detail {
 
-// The deviation of a patch of `pixels` pixels of `channels` values each (RGB by default): the
-// RMS difference of its values from the patch's mean color, over all its values (0 for a
-// one-color patch).
-double patchDeviation(const float* values, int pixels, int channels = 3);
+// The deviation (detail::patchDeviation) of a patch of `pixels` RGB pixels stored one after another.
+inline double rgbPatchDeviation(const float* values, int pixels) {
+  return detail::patchDeviation(pixels, 3, [&](int i) { return values + std::size_t(i) * 3; });
+}
 
 // The flatness threshold of an RGB 0..255 exemplar: the 10th-percentile deviation (the
 // (n / 10)-th smallest, counting from 0) of its n patchSize x patchSize patches fully inside it,

@@ -165,7 +165,7 @@ SurfaceQuality evaluateSurface(const Image& exemplar, const Mesh& coloredMesh, s
     for (std::size_t i = 0; i < count; ++i) {
       const std::span<float> patch(&plain[i * values], values);
       patches.resample(first + i, colors, 3, patch);
-      if (surface_detail::patchDeviation(patch.data(), size * size) < flatThreshold) ++flat;
+      if (surface_detail::rgbPatchDeviation(patch.data(), size * size) < flatThreshold) ++flat;
       for (int k = 1; k < kTransforms; ++k) {
         float* out = &turned[(i * (kTransforms - 1) + std::size_t(k - 1)) * values];
         for (int y = 0; y < size; ++y)
