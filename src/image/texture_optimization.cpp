@@ -163,7 +163,7 @@ void optimizeScale(std::span<const ExemplarAnalysis> analyses, const TextureOpti
     history.push_back(
         {level, size, iteration, detail::normalizedEnergy(matches, size), changed, grid.activeCount(), seconds});
   };
-  detail::iterateExpectationMaximization(options.maxIterations, match, update, record, progress);
+  detail::iterateExpectationMaximization(options.maxIterations, match, update, match, record, progress);
 }
 
 SourceCoordinates cropCoordinates(const SourceCoordinates& coords, int width, int height) {

@@ -248,7 +248,7 @@ void optimizeSurfaceCoordinates(const SurfaceNeighborhoods& neighborhoods, const
     history.push_back({level, neighborhoods.size, step, solver.energy(matches), changed,
                        std::int64_t(neighborhoods.activeCount()), seconds});
   };
-  detail::iterateExpectationMaximization(options.maxIterations, match, update, record, progress);
+  detail::iterateExpectationMaximization(options.maxIterations, match, update, match, record, progress);
 }
 
 }  // namespace texsynth

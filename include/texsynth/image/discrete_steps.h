@@ -29,6 +29,7 @@
 #include <cstdint>
 #include <limits>
 #include <span>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -86,10 +87,35 @@ inline constexpr float kVoteDistanceFloor = 0.01f;
 inline constexpr float kNegligibleVote = 1e-3f;
 inline constexpr std::size_t kProposingVotes = 4;
 
-inline void sortUnique(std::vector<std::int32_t>& values) {
-  std::sort(values.begin(), values.end());
-  values.erase(std::unique(values.begin(), values.end()), values.end());
-}
+// Which exemplar pixels a neighborhood has seen since clear(), in O(1) per pixel: a stamp per
+// pixel, kept per thread across calls (sorting the candidates to drop repeats took 13% of a
+// 512^2 optimization).
+class SeenPixels {
+ public:
+  explicit SeenPixels(std::int32_t pixelCount) {
+    if (stamps().size() < std::size_t(pixelCount)) stamps().assign(std::size_t(pixelCount), 0), epoch() = 0;
+  }
+  void clear() {
+    if (++epoch() == 0) std::fill(stamps().begin(), stamps().end(), 0), epoch() = 1;
+  }
+  // True the first time `pixel` is inserted after a clear().
+  bool insert(std::int32_t pixel) {
+    std::uint32_t& stamp = stamps()[std::size_t(pixel)];
+    if (stamp == epoch()) return false;
+    stamp = epoch();
+    return true;
+  }
+
+ private:
+  static std::vector<std::uint32_t>& stamps() {
+    thread_local std::vector<std::uint32_t> values;
+    return values;
+  }
+  static std::uint32_t& epoch() {
+    thread_local std::uint32_t value = 0;
+    return value;
+  }
+};
 
 inline float squaredDistance(const float* a, const float* b, int channels) {
   float sum = 0;
@@ -98,6 +124,50 @@ inline float squaredDistance(const float* a, const float* b, int channels) {
 }
 
 }  // namespace discrete
+
+// x_p of active neighborhood a into `query`. Missing cells (a domain that masksCells()) take
+// the PCA mean (no pull in a PCA ranking) and are left out of the full distance: returns the
+// distance's mask (null: none missing; else `kept`, one byte per cell) and scale.
+template <class Domain, class ColorOf>
+std::pair<const std::uint8_t*, float> gatherQuery(const Domain& domain, const ExemplarWindow& window,
+                                                  const PcaBasis& pca, std::int64_t a, ColorOf&& colorOf, float* query,
+                                                  std::uint8_t* kept) {
+  domain.gather(a, colorOf, query);
+  if (!domain.masksCells()) return {nullptr, 1.0f};
+  const int c = window.channels(), cells = window.size * window.size;
+  int keptCount = 0;
+  for (int i = 0; i < cells; ++i) {
+    float* cell = query + std::size_t(i) * c;
+    kept[i] = !std::isnan(cell[0]);
+    if (kept[i])
+      ++keptCount;
+    else
+      std::copy_n(pca.mean.data() + std::size_t(i) * c, c, cell);
+  }
+  if (keptCount == cells) return {nullptr, 1.0f};
+  return {kept, float(cells) / float(std::max(keptCount, 1))};
+}
+
+// The distances |x_p - z_p| of the active neighborhoods to their current matches, without a
+// search: the energy of an output against the matches its last E-step used.
+template <class Domain>
+void measureDiscrete(const Domain& domain, const ExemplarWindow& window, const PcaBasis& pca,
+                     std::span<const std::int32_t> sources, Matches& matches) {
+  TS_CHECK(std::int64_t(matches.pixel.size()) == domain.activeCount());
+  parallelForChunks(0, domain.activeCount(), domain.activeChunk(), [&](std::int64_t begin, std::int64_t end) {
+    std::vector<float> query(static_cast<std::size_t>(window.dimension()));
+    std::vector<int> columns(std::size_t(window.size));
+    std::vector<std::uint8_t> kept(std::size_t(window.size * window.size));
+    auto colorOf = [&](std::int64_t sample) { return window.exemplarColor(sources[std::size_t(sample)]); };
+    for (std::int64_t a = begin; a < end; ++a) {
+      const std::int32_t match = matches.pixel[std::size_t(a)];
+      if (match < 0) continue;
+      const auto [mask, scale] = gatherQuery(domain, window, pca, a, colorOf, query.data(), kept.data());
+      matches.distance[std::size_t(a)] =
+          window.distance(query.data(), match, std::numeric_limits<float>::infinity(), columns.data(), mask, scale);
+    }
+  });
+}
 
 // Discrete M-step: each active neighborhood's match becomes the best of its k-coherence
 // candidates (the exemplar neighborhoods that the sources of its samples propose, with their
@@ -121,16 +191,18 @@ std::int64_t matchDiscrete(const Domain& domain, const ExemplarWindow& window, c
     std::vector<std::int32_t> proposals, candidates;
     std::vector<std::pair<float, std::int32_t>> ranked;
     std::vector<std::uint8_t> kept(std::size_t(window.size * window.size));
+    SeenPixels seen(window.pixelCount());
     auto colorOf = [&](std::int64_t sample) { return window.exemplarColor(sources[std::size_t(sample)]); };
     for (std::int64_t a = begin; a < end; ++a) {
       // Each sample q = c + d proposes the exemplar neighborhood centred at S(q) - h d; coherent
-      // runs propose the same one, so repeats of the previous proposal are skipped early.
+      // runs propose the same one, so repeats of the previous proposal are skipped early. (The
+      // order of proposals and candidates does not matter: they are ranked by distance and pixel.)
       proposals.clear();
+      seen.clear();
       domain.forEachMember(a, [&](std::int64_t q, auto dx, auto dy) {
         const std::int32_t proposal = window.shifted(sources[std::size_t(q)], -dx, -dy);
-        if (proposals.empty() || proposals.back() != proposal) proposals.push_back(proposal);
+        if ((proposals.empty() || proposals.back() != proposal) && seen.insert(proposal)) proposals.push_back(proposal);
       });
-      sortUnique(proposals);
       // A neighborhood whose samples all propose the same exemplar neighborhood is a copy of it:
       // that is its match (distance 0), without a search. The usage term could move such a
       // match elsewhere, but searching them too changed 11 of 12 GIMP exemplars' outputs at 256^2
@@ -142,27 +214,15 @@ std::int64_t matchDiscrete(const Domain& domain, const ExemplarWindow& window, c
         matches.distance[std::size_t(a)] = 0;
         continue;
       }
-      domain.gather(a, colorOf, query.data());
-      // Missing cells take the PCA mean (no pull in the ranking) and leave the full distance.
-      const std::uint8_t* mask = nullptr;
-      float scale = 1.0f;
-      if (domain.masksCells()) {
-        const int c = window.channels(), cells = window.size * window.size;
-        int keptCount = 0;
-        for (int i = 0; i < cells; ++i) {
-          float* cell = query.data() + std::size_t(i) * c;
-          kept[std::size_t(i)] = !std::isnan(cell[0]);
-          if (kept[std::size_t(i)])
-            ++keptCount;
-          else
-            std::copy_n(pca.mean.data() + std::size_t(i) * c, c, cell);
-        }
-        if (keptCount < cells) mask = kept.data(), scale = float(cells) / float(std::max(keptCount, 1));
-      }
+      const auto [mask, scale] = gatherQuery(domain, window, pca, a, colorOf, query.data(), kept.data());
       candidates.clear();
+      seen.clear();
+      auto propose = [&](std::int32_t candidate) {
+        if (seen.insert(candidate)) candidates.push_back(candidate);
+      };
       for (std::int32_t u : proposals) {
         const std::int32_t* similar = similarity.similarAt(level, u);
-        for (int i = 0; i < k; ++i) candidates.push_back(window.allowedCentre(similar[i]));
+        for (int i = 0; i < k; ++i) propose(window.allowedCentre(similar[i]));
       }
       // Random candidates reach exemplar parts that no coherent candidate proposes (after the
       // start dropped them), as PatchMatch's random search does.
@@ -170,9 +230,8 @@ std::int64_t matchDiscrete(const Domain& domain, const ExemplarWindow& window, c
         const std::uint64_t key = hashKey(step.randomKey, std::uint64_t(a), std::uint64_t(r));
         const auto x = std::int32_t(uniformBelow(key, std::uint32_t(window.exemplarWidth)));
         const auto y = std::int32_t(uniformBelow(mix64(key), std::uint32_t(window.exemplarHeight)));
-        candidates.push_back(window.allowedCentre(y * window.exemplarWidth + x));
+        propose(window.allowedCentre(y * window.exemplarWidth + x));
       }
-      sortUnique(candidates);
       // Rank in PCA space (L&H 2005), then measure the few best in full space, with the usage
       // term, against the current match, which stays on ties. No more candidates than the
       // shortlist (coherent neighborhoods without random candidates): all of them, unranked.
@@ -247,14 +306,19 @@ std::vector<std::int32_t> updateDiscrete(const Domain& domain, const ExemplarWin
   }
   parallelForChunks(0, domain.sampleCount(), domain.sampleChunk(), [&](std::int64_t begin, std::int64_t end) {
     std::vector<std::pair<std::int32_t, float>> votes, tally;  // (vote, weight); distinct votes, summed weights
+    std::vector<float> voteColors;                             // the tally's colors, in its order
     for (std::int64_t sample = begin; sample < end; ++sample) {
       votes.clear();
+      std::int32_t best = sources[std::size_t(sample)];
+      bool unanimous = true;  // every vote is for the current source
       domain.forEachCovering(sample, [&](std::int64_t a, auto dx, auto dy) {
         const std::int32_t match = matches.pixel[std::size_t(a)];
-        if (match >= 0) votes.push_back({window.shifted(match, dx, dy), voteWeight[std::size_t(a)]});
+        if (match < 0) return;
+        votes.push_back({window.shifted(match, dx, dy), voteWeight[std::size_t(a)]});
+        unanimous = unanimous && votes.back().first == best;
       });
-      std::int32_t best = sources[std::size_t(sample)];
-      if (votes.empty()) {
+      // No votes, or a cost of 0 that nothing beats (without a constraint to move it).
+      if (votes.empty() || (unanimous && !(constraint && constraint->weight > 0))) {
         next[std::size_t(sample)] = best;
         continue;
       }
@@ -274,13 +338,6 @@ std::vector<std::int32_t> updateDiscrete(const Domain& domain, const ExemplarWin
         constraintWeight *= constraint->weight;
         target = constraint->colors.data() + std::size_t(sample) * std::size_t(channels);
       }
-      auto cost = [&](std::int32_t candidate) {
-        const float* color = window.exemplarColor(candidate);
-        float sum = target ? constraintWeight * std::sqrt(squaredDistance(color, target, channels)) : 0.0f;
-        for (const auto& [vote, weight] : tally)
-          sum += weight * std::sqrt(squaredDistance(color, window.exemplarColor(vote), channels));
-        return sum;
-      };
       // Weighted votes concentrate on the few well-aligned matches: the rest hardly move the
       // cost, and the candidates come from the strongest votes only.
       float strongest = 0;
@@ -289,7 +346,24 @@ std::vector<std::int32_t> updateDiscrete(const Domain& domain, const ExemplarWin
       std::sort(tally.begin(), tally.end(), [](const auto& a, const auto& b) {
         return a.second != b.second ? a.second > b.second : a.first < b.first;
       });
-      float bestCost = cost(best);
+      voteColors.clear();
+      for (const auto& entry : tally) {
+        const float* color = window.exemplarColor(entry.first);
+        voteColors.insert(voteColors.end(), color, color + channels);
+      }
+      // The cost, abandoned (returning a value >= bound) once its partial sum reaches `bound`:
+      // every term is non-negative and the strongest votes come first, so most candidates stop
+      // after a few votes.
+      auto cost = [&](std::int32_t candidate, float bound) {
+        const float* color = window.exemplarColor(candidate);
+        float sum = target ? constraintWeight * std::sqrt(squaredDistance(color, target, channels)) : 0.0f;
+        const float* voteColor = voteColors.data();
+        for (std::size_t t = 0; t < tally.size() && sum < bound; ++t, voteColor += channels)
+          sum += tally[t].second * std::sqrt(squaredDistance(color, voteColor, channels));
+        return sum;
+      };
+      const float infinity = std::numeric_limits<float>::infinity();
+      float bestCost = cost(best, infinity);
       // Nothing beats a cost of 0 (ties keep the current source): a sample every vote and the
       // constraint agree on needs no search.
       const std::size_t proposing = bestCost == 0      ? 0
@@ -299,7 +373,7 @@ std::vector<std::int32_t> updateDiscrete(const Domain& domain, const ExemplarWin
         const std::int32_t* similar = analysis.similarAt(level, tally[t].first);
         for (int i = 0; i < k; ++i) {
           if (similar[i] == best) continue;
-          const float c = cost(similar[i]);
+          const float c = cost(similar[i], bestCost);
           if (c < bestCost) bestCost = c, best = similar[i];
         }
       }
@@ -311,11 +385,14 @@ std::vector<std::int32_t> updateDiscrete(const Domain& domain, const ExemplarWin
 
 // E+M iterations at one level and neighborhood size (Table 1): the matches of the output as it
 // comes in, then up to `maxIterations` E+M steps, until no match changes. match() runs an M-step
-// and returns how many matches changed, update() an E-step; record(iteration, changed, seconds)
-// logs each M-step. Progress advances maxIterations + 1 units in all.
-template <class Match, class Update, class Record>
-void iterateExpectationMaximization(int maxIterations, Match&& match, Update&& update, Record&& record,
-                                    Progress& progress) {
+// and returns how many matches changed, update() an E-step, measure() the energy of the output
+// against the matches its E-step used; record(iteration, changed, seconds) logs each step. After
+// the last allowed E-step, measure() stands in for match(): those matches would guide no further
+// E-step, and a search for them took a third of the M-steps' time; the step is logged with the
+// changes measure() returns (none when it returns nothing). Progress advances maxIterations + 1 units in all.
+template <class Match, class Update, class Measure, class Record>
+void iterateExpectationMaximization(int maxIterations, Match&& match, Update&& update, Measure&& measure,
+                                    Record&& record, Progress& progress) {
   using Clock = std::chrono::steady_clock;
   Clock::time_point start = Clock::now();
   const std::int64_t first = match();
@@ -325,7 +402,13 @@ void iterateExpectationMaximization(int maxIterations, Match&& match, Update&& u
   for (; iteration <= maxIterations; ++iteration) {
     start = Clock::now();
     update();
-    const std::int64_t changed = match();
+    std::int64_t changed = 0;
+    if (iteration < maxIterations)
+      changed = match();
+    else if constexpr (std::is_void_v<decltype(measure())>)
+      measure();
+    else
+      changed = measure();  // a solver whose last search is its measure
     record(iteration, changed, secondsSince(start));
     progress.advance(1);
     if (changed == 0) break;
@@ -361,11 +444,14 @@ void optimizeDiscreteScale(Domain& domain, std::span<const ExemplarAnalysis> ana
   auto update = [&] {
     sources = updateDiscrete(domain, window, similarity, level, sources, options.voteExponent, matches);
   };
+  auto measure = [&] {
+    measureDiscrete(domain, window, analyses[scale].levels[std::size_t(level)].pca, sources, matches);
+  };
   auto record = [&](int iteration, std::int64_t changed, double seconds) {
     history.push_back(
         {level, size, iteration, normalizedEnergy(matches, size), changed, domain.activeCount(), seconds});
   };
-  iterateExpectationMaximization(options.maxIterations, match, update, record, progress);
+  iterateExpectationMaximization(options.maxIterations, match, update, measure, record, progress);
 }
 
 }  // namespace texsynth::detail
