@@ -10,6 +10,7 @@
 #include "texsynth/core/atomic_file.h"
 #include "texsynth/core/memory_budget.h"
 #include "texsynth/image/make_tileable.h"
+#include "texsynth/image/seam_blend.h"
 #include "texsynth/image/tile_blend.h"
 #include "texsynth/image/tile_deform.h"
 #include "texsynth/io/file_kind.h"
@@ -75,6 +76,7 @@ const std::vector<ModeFlag> kImageModeFlags = {
     {"--coverage", {"optimize"}},
     {"--start", {"optimize"}},
     {"--vote-exponent", {"optimize"}},
+    {"--seam-blend", {"optimize", "--apply-coords"}},
 };
 
 // Where the library's parameters come from on `image`'s command line.
@@ -108,7 +110,8 @@ ParameterSources imageParameterSources(const ImageArgs& args) {
           {"iterations", fromFlag("--iterations")},
           {"coverageWeight", fromFlag("--coverage")},
           {"start", fromFlag("--start")},
-          {"voteExponent", fromFlag("--vote-exponent")}};
+          {"voteExponent", fromFlag("--vote-exponent")},
+          {"seamBlend", fromFlag("--seam-blend")}};
 }
 
 // Source coordinates are pixel indices into exemplars of up to 65536 pixels a side: only float
@@ -298,6 +301,12 @@ Command registerImageCommand(CLI::App& app, const GlobalOptions& globals) {
                   "0.01)^-E, so well-aligned matches decide and thin features survive (default 4; 0 = equal votes, "
                   "Han et al.)")
       ->check(finiteIn(0, 16));
+  sub->add_option("--seam-blend", args->seamBlend,
+                  "optimize (discrete): feather the seams between exemplar pieces over a Gaussian of this many "
+                  "output pixels, as G'MIC blends its patches; pixels inside a coherent piece keep their exact "
+                  "color, and --coords stays crisp (default 1.5; 0 = crisp cuts). --apply-coords feathers the same "
+                  "way, so that optimize's coordinates re-apply to the image it wrote; pass 0 for parallel's")
+      ->check(finiteIn(0, kMaxSeamBlend));
   sub->add_option("--start", args->start,
                   "optimize (discrete): start from the parallel method's result (keeps every part of the exemplar, "
                   "no lattice), from random exemplar patches, or from random pixels (Han et al.)")

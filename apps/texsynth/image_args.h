@@ -27,8 +27,8 @@ struct ImageArgs {
   float footprint = -1;  // -1 = the library's default
   // optimize
   std::string solver = "discrete";
-  int iterations = -1;                     // -1 = the library's default
-  float coverage = -1, voteExponent = -1;  // -1 = the library's default
+  int iterations = -1;                                     // -1 = the library's default
+  float coverage = -1, voteExponent = -1, seamBlend = -1;  // -1 = the library's default
   std::string start = "parallel";
 };
 

@@ -9,6 +9,7 @@
 #include "texsynth/exemplar/analysis_cache.h"
 #include "texsynth/exemplar/gaussian_stack.h"
 #include "texsynth/image/parallel_synthesis.h"
+#include "texsynth/image/seam_blend.h"
 #include "texsynth/image/texture_optimization.h"
 #include "texsynth/io/image_io.h"
 
@@ -89,6 +90,9 @@ Image synthesizeOptimized(const Image& exemplar, const ImageArgs& args, int widt
   if (args.similarCount >= 0) options.similarCount = args.similarCount;
   if (args.coverage >= 0) options.coverageWeight = args.coverage;
   if (args.voteExponent >= 0) options.voteExponent = args.voteExponent;
+  if (args.seamBlend >= 0) options.seamBlend = args.seamBlend;
+  if (options.solver == OptimizationSolver::LeastSquares && args.seamBlend >= 0)
+    throw ParameterError("--seam-blend", "the least-squares solver blends colors everywhere; use --solver discrete");
   if (options.solver == OptimizationSolver::LeastSquares && !args.coords.empty())
     throw ParameterError("--coords",
                          "the least-squares solver blends colors, so it has no source coordinates; use "
@@ -149,7 +153,10 @@ Image applyCoordinates(const Image& map, const ImageArgs& args, json& report) {
       }
     }
   report["coords"] = args.applyCoords;
-  return lookupColors(map, source);
+  // Feathered as optimize feathers its output (the same default), so its coordinates re-apply
+  // to the same picture.
+  const float seamBlend = args.seamBlend >= 0 ? args.seamBlend : TextureOptimizationOptions{}.seamBlend;
+  return seamBlendedColors(map, source, 0, seamBlend);
 }
 
 }  // namespace texsynth::cli

@@ -9,6 +9,7 @@
 #include "texsynth/core/parallel.h"
 #include "texsynth/core/random.h"
 #include "texsynth/image/flat_patch_share.h"
+#include "texsynth/image/seam_blend.h"
 
 namespace texsynth {
 namespace {
@@ -41,6 +42,9 @@ void validate(const TextureOptimizationOptions& options) {
     throw ParameterError("randomCandidates", "must be in 0..1024, got " + std::to_string(options.randomCandidates));
   if (!(options.robustExponent > 0.0f && options.robustExponent <= 2.0f))
     throw ParameterError("robustExponent", "must be in (0, 2], got " + std::to_string(options.robustExponent));
+  if (!(options.seamBlend >= 0.0f && options.seamBlend <= kMaxSeamBlend))
+    throw ParameterError("seamBlend", "must be in [0, " + std::to_string(kMaxSeamBlend) + "] output pixels, got " +
+                                          std::to_string(options.seamBlend));
   if (!(options.collapseTolerance >= 0.0 && options.collapseTolerance <= 1.0))
     throw ParameterError("collapseTolerance",
                          "must be in [0, 1] (1 = no guard), got " + std::to_string(options.collapseTolerance));
@@ -320,7 +324,8 @@ TextureOptimizationResult optimizeTexture(std::span<const ExemplarAnalysis> anal
     colors = std::move(state.colors);
   } else {
     result.coords = cropCoordinates(state.coords, width, height);
-    colors = detail::colorsAt(finest, state.coords.pixelIndices(base.width));
+    // Feathered on the output itself, so that --apply-coords re-applies the same.
+    colors = seamBlendedColors(finest.window.exemplar->image, result.coords, base.colorChannels, options.seamBlend);
   }
   result.colors = colors.crop(0, 0, width, height).withChannels(base.colorChannels);
   return result;

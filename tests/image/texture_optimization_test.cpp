@@ -18,6 +18,7 @@
 #include "texsynth/exemplar/analysis.h"
 #include "texsynth/image/flat_patch_share.h"
 #include "texsynth/image/optimization_grid.h"
+#include "texsynth/image/seam_blend.h"
 
 namespace texsynth {
 namespace {
@@ -114,7 +115,14 @@ TEST(TextureOptimization, ColorsAreTheExemplarAtTheCoordinates) {
   ASSERT_EQ(result.coords.width, 60);
   ASSERT_EQ(result.colors.width, 60);
   EXPECT_EQ(result.colors.channels, 3);
-  EXPECT_EQ(lookupColors(fixture.exemplar, result.coords).pixels, result.colors.pixels);
+  // Feathered at the seams (seam_blend_test.cpp), crisp without.
+  EXPECT_EQ(seamBlendedColors(fixture.exemplar, result.coords, 3, fixture.options.seamBlend).pixels,
+            result.colors.pixels);
+  TextureOptimizationOptions crisp = fixture.options;
+  crisp.seamBlend = 0;
+  const TextureOptimizationResult cut = optimizeTexture(fixture.analyses, crisp, 60, 60);
+  EXPECT_EQ(cut.coords.xy, result.coords.xy);
+  EXPECT_EQ(lookupColors(fixture.exemplar, cut.coords).pixels, cut.colors.pixels);
   for (std::size_t i = 0; i < result.coords.xy.size(); i += 2) {
     ASSERT_GE(result.coords.xy[i], 0);
     ASSERT_LT(result.coords.xy[i], fixture.exemplar.width);
@@ -313,6 +321,8 @@ TEST(TextureOptimization, RejectsBadOptions) {
   test::expectParameterError([&] { run(o); }, "voteExponent");
   o = fixture.options, o.randomCandidates = -1;
   test::expectParameterError([&] { run(o); }, "randomCandidates");
+  o = fixture.options, o.seamBlend = 5;
+  test::expectParameterError([&] { run(o); }, "seamBlend");
   o = fixture.options, o.collapseTolerance = std::nan("");
   test::expectParameterError([&] { run(o); }, "collapseTolerance");
   const SourceCoordinates small(0, 0, 8, 16);
