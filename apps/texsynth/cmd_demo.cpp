@@ -254,12 +254,13 @@ void runDemo(const DemoArgs& args, const GlobalOptions& globals) {
   writeFileAtomically(out("report.md"), markdownReport(report));
   if (globals.json) printJsonWhenCommitted(report);
   sayWhenCommitted(
-      globals, "wrote " + out("report.md") +
-                   " with exemplar.png, gaussian_stack.png, mesh.png, mesh_solid.png, pixel_synthesis.png, "
-                   "surface_synthesis.png, animation_frames.png, animation_lambdas.png, animation.gif, lazy_solid.png, "
-                   "studio_cut.png, "
-                   "gradient_magnified.png, "
-                   "gradient_edit.png, gradient_synthesized.png and gradient_solid.tsgs");
+      globals,
+      "wrote " + out("report.md") +
+          " with exemplar.png, gaussian_stack.png, mesh.png, mesh_solid.png, pixel_synthesis.png, pixel_seams.png, "
+          "surface_synthesis.png, animation_frames.png, animation_lambdas.png, animation.gif, lazy_solid.png, "
+          "studio_cut.png, "
+          "gradient_magnified.png, "
+          "gradient_edit.png, gradient_synthesized.png and gradient_solid.tsgs");
 }
 
 }  // namespace

@@ -289,7 +289,7 @@ Command registerImageCommand(CLI::App& app, const GlobalOptions& globals) {
                   "2005; e.g. 5,7). optimize: sizes run in turn at every level (default 17,9, Han et al. Table 2)");
   sub->add_option("--iterations", args->iterations,
                   "optimize: most E+M iterations per level and neighborhood size (stops when no match changes; "
-                  "default 2)")
+                  "default 2, and 1 at the finest level, which the coarser ones have settled)")
       ->check(integerIn(1, 100));
   sub->add_option("--coverage", args->coverage,
                   "optimize (discrete): weight of the exemplar-coverage term, which makes over-used exemplar regions "

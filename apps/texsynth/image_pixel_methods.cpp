@@ -85,7 +85,7 @@ Image synthesizeOptimized(const Image& exemplar, const ImageArgs& args, int widt
   else  // the default 3, or as many as a tiny exemplar has
     options.levels = std::min(options.levels, defaultStackLevelCount(exemplar.width, exemplar.height));
   if (!args.neighborhoods.empty()) options.neighborhoodSizes = parseNeighborhoods(args.neighborhoods);
-  if (args.iterations > 0) options.maxIterations = args.iterations;
+  if (args.iterations > 0) options.maxIterations = options.finestIterations = args.iterations;
   if (!args.jitter.empty()) options.jitter = parseFloatPair(args.jitter, "--jitter").second;
   if (args.similarCount >= 0) options.similarCount = args.similarCount;
   if (args.coverage >= 0) options.coverageWeight = args.coverage;

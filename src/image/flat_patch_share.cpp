@@ -41,15 +41,20 @@ double FlatPatchShare::of(std::span<const std::int32_t> sources, int width, int 
   const int rows = (height + kSampleStep - 1) / kSampleStep, side = 2 * radius_ + 1;
   std::vector<int> flatPerRow(static_cast<std::size_t>(rows), 0);
   parallelForChunks(0, rows, 8, [&](std::int64_t begin, std::int64_t end) {
+    // A patch's colors gathered once (patchDeviation reads each twice), with its wrapped rows
+    // and columns computed per patch rather than per read.
+    std::vector<const float*> colors(static_cast<std::size_t>(side * side));
+    std::vector<std::size_t> rowStart(static_cast<std::size_t>(side)), column(static_cast<std::size_t>(side));
     for (std::int64_t row = begin; row < end; ++row) {
       const int y = int(row) * kSampleStep;
+      for (int d = 0; d < side; ++d) rowStart[std::size_t(d)] = std::size_t(wrapIndex(y + d - radius_, height)) * width;
       for (int x = 0; x < width; x += kSampleStep) {
-        const double d = patchDeviation(side * side, channels_, [&](int i) {
-          const int dx = i % side - radius_, dy = i / side - radius_;
-          const std::int32_t source = sources[std::size_t(wrapIndex(y + dy, height)) * std::size_t(width) +
-                                              std::size_t(wrapIndex(x + dx, width))];
-          return image.pixels.data() + std::size_t(source) * std::size_t(image.channels);
-        });
+        for (int d = 0; d < side; ++d) column[std::size_t(d)] = std::size_t(wrapIndex(x + d - radius_, width));
+        for (int i = 0; i < side * side; ++i) {
+          const std::int32_t source = sources[rowStart[std::size_t(i / side)] + column[std::size_t(i % side)]];
+          colors[std::size_t(i)] = image.pixels.data() + std::size_t(source) * std::size_t(image.channels);
+        }
+        const double d = patchDeviation(side * side, channels_, [&](int i) { return colors[std::size_t(i)]; });
         flatPerRow[std::size_t(row)] += d < threshold_;
       }
     }

@@ -32,6 +32,8 @@ void validate(const TextureOptimizationOptions& options) {
                                                ", got " + std::to_string(n));
   if (options.maxIterations < 1)
     throw ParameterError("iterations", "must be >= 1, got " + std::to_string(options.maxIterations));
+  if (options.finestIterations < 1)
+    throw ParameterError("finestIterations", "must be >= 1, got " + std::to_string(options.finestIterations));
   if (options.similarCount < 1)
     throw ParameterError("similarCount", "must be >= 1, got " + std::to_string(options.similarCount));
   if (!(options.coverageWeight >= 0.0f && options.coverageWeight <= 100.0f))
@@ -128,6 +130,11 @@ void assignSources(std::span<const std::int32_t> sources, int exemplarWidth, Sou
   }
 }
 
+// Most E+M iterations per neighborhood size at `level` of `levels`.
+int iterationsAt(const TextureOptimizationOptions& options, int level, int levels) {
+  return !isLeastSquares(options) && level + 1 == levels ? options.finestIterations : options.maxIterations;
+}
+
 // The state one level carries between neighborhood sizes and iterations.
 struct LevelState {
   SourceCoordinates coords;  // discrete
@@ -146,6 +153,7 @@ void optimizeScale(std::span<const ExemplarAnalysis> analyses, const TextureOpti
     // them there: coherence, its 90th percentile and completeness within 1%, 0.81x the time).
     TextureOptimizationOptions scaleOptions = options;
     if (level + 1 == analysis.levelCount()) scaleOptions.randomCandidates = 0;
+    scaleOptions.maxIterations = iterationsAt(options, level, analysis.levelCount());
     OptimizationGrid grid(analysis, level, state.coords.width, state.coords.height, size);
     std::vector<std::int32_t> sources = state.coords.pixelIndices(analysis.width);
     detail::optimizeDiscreteScale(grid, analyses, level, scale, scaleOptions, sources, history, progress);
@@ -274,9 +282,9 @@ TextureOptimizationResult optimizeTexture(std::span<const ExemplarAnalysis> anal
 
   TextureOptimizationResult result;
   LevelState state;
-  const int steps = int(options.neighborhoodSizes.size()) * (options.maxIterations + 1);
   for (int level = first; level < levels; ++level) {
     const int w = widths[level], h = heights[level];
+    const int steps = int(options.neighborhoodSizes.size()) * (iterationsAt(options, level, levels) + 1);
     progress.begin("optimize level " + std::to_string(level + 1) + "/" + std::to_string(levels) + " (" +
                        std::to_string(w) + "x" + std::to_string(h) + ")",
                    steps);

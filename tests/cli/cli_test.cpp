@@ -168,8 +168,8 @@ TEST(Cli, DemoRunsOnDefaultsAndWritesReport) {
   RunResult r = runTexsynth("demo -o " + dir.file("demo") + " --quiet", dir);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   for (const char* name : {"report.md", "report.json", "exemplar.png", "gaussian_stack.png", "mesh.png",
-                           "mesh_solid.png", "pixel_synthesis.png", "gradient_magnified.png", "gradient_edit.png",
-                           "gradient_synthesized.png", "gradient_solid.tsgs"})
+                           "mesh_solid.png", "pixel_synthesis.png", "pixel_seams.png", "gradient_magnified.png",
+                           "gradient_edit.png", "gradient_synthesized.png", "gradient_solid.tsgs"})
     EXPECT_TRUE(fs::exists(dir.file(std::string("demo/") + name))) << name;
   std::string report = readFileBytes(dir.file("demo/report.json"));
   EXPECT_NE(report.find("periodicity"), std::string::npos);

@@ -43,7 +43,7 @@ struct Fixture {
   explicit Fixture(OptimizationSolver solver) {
     options.solver = solver;
     options.neighborhoodSizes = {9, 5};
-    options.maxIterations = 4;
+    options.maxIterations = options.finestIterations = 4;
     analyses = analysesFor(exemplar, options);
   }
   TextureOptimizationResult run(int side = 64) const { return optimizeTexture(analyses, options, side, side); }
@@ -311,6 +311,8 @@ TEST(TextureOptimization, RejectsBadOptions) {
   test::expectParameterError([&] { run(o); }, "neighborhood");
   o = fixture.options, o.maxIterations = 0;
   test::expectParameterError([&] { run(o); }, "iterations");
+  o = fixture.options, o.finestIterations = 0;
+  test::expectParameterError([&] { run(o); }, "finestIterations");
   o = fixture.options, o.similarCount = 0;
   test::expectParameterError([&] { run(o); }, "similarCount");
   o = fixture.options, o.robustExponent = 3;

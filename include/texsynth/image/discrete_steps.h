@@ -83,9 +83,11 @@ inline constexpr std::size_t kFullSpaceShortlist = 8;
 // every other one infinitely.
 inline constexpr float kVoteDistanceFloor = 0.01f;
 // E-step with weighted votes: votes below this share of the strongest are left out of the
-// cost, and only the strongest few votes propose candidates (their similarity sets).
+// cost, and only the strongest few votes propose candidates (their similarity sets): 2 instead
+// of 4 leaves coherence and its 90th percentile within 0.5% (12 GIMP exemplars at 256^2) at
+// 0.96x the time (512^2).
 inline constexpr float kNegligibleVote = 1e-3f;
-inline constexpr std::size_t kProposingVotes = 4;
+inline constexpr std::size_t kProposingVotes = 2;
 
 // Which exemplar pixels a neighborhood has seen since clear(), in O(1) per pixel: a stamp per
 // pixel, kept per thread across calls (sorting the candidates to drop repeats took 13% of a

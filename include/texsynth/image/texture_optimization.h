@@ -68,6 +68,10 @@ struct TextureOptimizationOptions {
   // Most E+M iterations per neighborhood size; stops earlier when no match changes
   // (Table 2: 1-3 per size; 3 lowers coherence by about 1% over 2 at 1.2x the time).
   int maxIterations = 2;
+  // The same at the finest level, whose start the coarser levels have already settled (12 GIMP
+  // exemplars at 512^2: 1 instead of 2 takes 0.84x the time, coherence and its 90th percentile
+  // within 1%).
+  int finestIterations = 1;
   // How the coarsest level starts, and the jitter of the finer levels after upsampling
   // (strength as in parallel synthesis; 0 = none: the optimization itself removes it).
   OptimizationStart start = OptimizationStart::RandomPatches;
