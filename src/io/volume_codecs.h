@@ -16,14 +16,11 @@ Volume decodeNrrd(const std::string& path, std::string_view bytes);
 void writeNrrd(const std::string& filePath, const std::string& path, const Volume& volume,
                const VolumeWriteOptions& options);
 
-// OpenVDB file contents: "density" (+ "color") grids; `path` names errors.
+// OpenVDB file contents: "density" (+ "color") grids; `path` names errors. Both go through the
+// OpenVDB module (vdb/vdb_module.h), loaded on first use.
 std::string encodeVdb(const std::string& path, const Volume& volume);
 // A volume from OpenVDB file contents (the rule is in volume_io.h); `path` names errors.
 Volume decodeVdb(const std::string& path, std::string bytes);
-// openvdb::initialize() once per process (it registers the grid types).
-void initializeOpenVdb();
-// Grid metadata (Vec3i) holding the volume's size, so zero borders survive a round trip.
-inline constexpr const char* kVdbSizeMetadata = "texsynth_size";
 
 // gzip/zlib inflate of `compressed` into exactly `expectedBytes` bytes; throws
 // InputError(path, ...) if the stream is corrupt or ends early.

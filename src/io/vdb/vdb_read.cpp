@@ -1,5 +1,5 @@
 // OpenVDB reader: picks one grid (a "color" Vec3 grid, else a scalar float grid), finds the
-// dense box it covers and copies it into a Volume with openvdb::tools::copyToDense. The file
+// dense box it covers and copies it into a dense volume with openvdb::tools::copyToDense. The file
 // is parsed from memory by io::Stream without delayed loading, so a truncated file fails
 // here rather than when a voxel is first touched.
 #include <openvdb/io/Stream.h>
@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "texsynth/core/error.h"
-#include "volume_codecs.h"
+#include "vdb_module.h"
 
-namespace texsynth::volume_codec {
+namespace texsynth::vdb_module {
 namespace {
 
 template <typename Grid>
@@ -91,12 +91,14 @@ void copyGrid(const openvdb::GridBase::Ptr& grid, const openvdb::CoordBBox& box,
   openvdb::tools::copyToDense(*openvdb::gridPtrCast<Grid>(grid), dense);
 }
 
-Volume denseVolume(const std::string& path, const openvdb::GridBase::Ptr& grid) {
+DenseVolume denseVolume(const std::string& path, const openvdb::GridBase::Ptr& grid) {
   int channels = isColor(grid) ? 3 : 1;
   openvdb::CoordBBox box = denseBox(path, *grid);
   checkSize(path, *grid, box, channels);
   openvdb::Coord dim = box.dim();
-  Volume volume(dim.x(), dim.y(), dim.z(), channels);
+  DenseVolume volume{dim.x(), dim.y(), dim.z(), channels, {}};
+  const std::size_t voxelCount = std::size_t(dim.x()) * dim.y() * dim.z();
+  volume.voxels.assign(voxelCount * channels, 0.0f);
   if (channels == 1) {
     if (grid->isType<openvdb::FloatGrid>())
       copyGrid<float, openvdb::FloatGrid>(grid, box, volume.voxels.data());
@@ -104,7 +106,7 @@ Volume denseVolume(const std::string& path, const openvdb::GridBase::Ptr& grid) 
       copyGrid<float, openvdb::DoubleGrid>(grid, box, volume.voxels.data());
     return volume;
   }
-  std::vector<openvdb::Vec3s> color(volume.voxelCount());
+  std::vector<openvdb::Vec3s> color(voxelCount);
   if (grid->isType<openvdb::Vec3SGrid>())
     copyGrid<openvdb::Vec3s, openvdb::Vec3SGrid>(grid, box, color.data());
   else
@@ -116,7 +118,7 @@ Volume denseVolume(const std::string& path, const openvdb::GridBase::Ptr& grid) 
 
 }  // namespace
 
-Volume decodeVdb(const std::string& path, std::string bytes) {
+DenseVolume decode(const std::string& path, std::string bytes) {
   initializeOpenVdb();
   const std::string unreadable = "not a readable OpenVDB file: ";
   try {
@@ -145,4 +147,4 @@ Volume decodeVdb(const std::string& path, std::string bytes) {
   }
 }
 
-}  // namespace texsynth::volume_codec
+}  // namespace texsynth::vdb_module
