@@ -3,8 +3,11 @@
 // out), else from the build tree the program was built in.
 #include <dlfcn.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <mutex>
+#include <string>
+#include <vector>
 
 #include "texsynth/core/error.h"
 #include "vdb/vdb_module.h"

@@ -89,6 +89,13 @@ TEST(Cli, InfoReadsOpenVdbVolumes) {
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_EQ(lineCount(r.err), 1) << r.err;
   EXPECT_NE(r.err.find("not a readable OpenVDB file"), std::string::npos) << r.err;
+
+  // The codec is a module loaded on first use: without it, one clear line naming the file.
+  r = runTexsynth("info " + dir.file("v.vdb"), dir, "TEXSYNTH_VDB_MODULE=" + dir.file("missing.so"));
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("v.vdb: OpenVDB support is missing"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("missing.so"), std::string::npos) << r.err;
 }
 
 TEST(Cli, EvalOfExemplarAgainstItselfIsPerfect) {
