@@ -14,13 +14,11 @@ Image seamBlendedColors(const Image& image, const SourceCoordinates& coords, int
   if (!(sigma >= 0.0f && sigma <= kMaxSeamBlend))
     throw ParameterError("seamBlend",
                          "must be in [0, " + std::to_string(kMaxSeamBlend) + "], got " + std::to_string(sigma));
+  // The crisp colors (lookupColors checks the image and channels); seam pixels are replaced below.
+  Image out = lookupColors(image, coords, channels);
   const int radius = int(std::lround(1.5f * sigma));
-  if (radius == 0) return lookupColors(image, coords, channels);
-  if (image.empty()) throw ParameterError("image", "is empty");
-  if (channels < 0 || channels > image.channels)
-    throw ParameterError("channels",
-                         "must be in [0, " + std::to_string(image.channels) + "], got " + std::to_string(channels));
-  if (channels == 0) channels = image.channels;
+  if (radius == 0) return out;
+  channels = out.channels;
   // The window's offsets and Gaussian weights, once.
   struct Tap {
     int dx, dy;
@@ -31,7 +29,6 @@ Image seamBlendedColors(const Image& image, const SourceCoordinates& coords, int
     for (int dx = -radius; dx <= radius; ++dx)
       taps.push_back({dx, dy, std::exp(-float(dx * dx + dy * dy) / (2 * sigma * sigma))});
   const int w = coords.width, h = coords.height, mw = image.width, mh = image.height;
-  Image out(w, h, channels);
   // Every pixel's coordinates wrapped onto the map once; a tap's offset then wraps with one
   // compare (unless the map is narrower than the window).
   std::vector<std::int32_t> mapX(std::size_t(w) * h), mapY(mapX.size());
@@ -56,11 +53,8 @@ Image seamBlendedColors(const Image& image, const SourceCoordinates& coords, int
           proposals[2 * t + 1] = wrap(mapY[q] - taps[t].dy, mh);
           seam = seam || proposals[2 * t] != ownX || proposals[2 * t + 1] != ownY;
         }
+        if (!seam) continue;
         float* to = out.pixel(x, y);
-        if (!seam) {
-          std::copy_n(image.pixel(ownX, ownY), channels, to);
-          continue;
-        }
         std::fill(sum.begin(), sum.end(), 0.0f);
         float total = 0;
         for (std::size_t t = 0; t < taps.size(); ++t) {

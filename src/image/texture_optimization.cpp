@@ -326,14 +326,13 @@ TextureOptimizationResult optimizeTexture(std::span<const ExemplarAnalysis> anal
     progress.end();
   }
 
-  const OptimizationGrid finest(base, levels - 1, widths.back(), heights.back(), options.neighborhoodSizes.back());
   Image colors;
   if (isLeastSquares(options)) {
     colors = std::move(state.colors);
   } else {
     result.coords = cropCoordinates(state.coords, width, height);
     // Feathered on the output itself, so that --apply-coords re-applies the same.
-    colors = seamBlendedColors(finest.window.exemplar->image, result.coords, base.colorChannels, options.seamBlend);
+    colors = seamBlendedColors(base.levels.back().image, result.coords, base.colorChannels, options.seamBlend);
   }
   result.colors = colors.crop(0, 0, width, height).withChannels(base.colorChannels);
   return result;
