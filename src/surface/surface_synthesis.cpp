@@ -96,9 +96,11 @@ SurfaceSynthesisResult synthesizeSurface(std::span<const ExemplarAnalysis> analy
     }
     const bool finest = level + 1 == levels;
     SurfaceParallelOptions levelOptions = parallel;
-    levelOptions.histogramBand = finest ? startOptions.finestHistogramBand : 0.0f;
     levelOptions.holdUsagePaidMoves = finest && startOptions.finestHoldsUsagePaidMoves;
     for (int pass = 0; pass < passes; ++pass) {
+      // The histogram band in the last pass only: each banded pass may trade up to the band's
+      // share of coherence, and on a smooth exemplar two of them leave no coherent copy.
+      levelOptions.histogramBand = finest && pass + 1 == passes ? startOptions.finestHistogramBand : 0.0f;
       correctSurfaceCoordinates(prepared.stencil, base, level, levelOptions, coordinates);
       progress.advance(1);
     }

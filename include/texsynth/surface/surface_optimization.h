@@ -7,7 +7,8 @@
 // surface out (GIMP brick on the CGAL bunny: flatness -0.09 before, 0.60 after). Here a
 // neighborhood is compared at its members' own flattened offsets (a coherent copy costs 0),
 // matches are continuous positions, every vote carries its sub-pixel part, and each vertex takes
-// its strongest vote (see update() in surface_optimization.cpp for why not the consensus).
+// its strongest vote, votes within a pixel of each other counted together (see update() in
+// surface_optimization.cpp for why not the consensus).
 #include <cstddef>
 #include <span>
 #include <vector>
