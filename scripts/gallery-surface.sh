@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The surface-synthesis gallery: `texsynth surface` on four CGAL meshes with structured and
-# stochastic GIMP exemplars, one oriented by a sketched field, rendered and stored as JPEG in
-# docs/gallery/surface_<mesh>_<exemplar>.jpg.
+# stochastic GIMP exemplars, one oriented by a sketched field, rendered at the default size (two
+# 768² views) and stored as JPEG in docs/gallery/surface_<mesh>_<exemplar>.jpg; bunny_brick is
+# the README's first surface command.
 # Usage: scripts/gallery-surface.sh [BUILD_DIR] [OUTPUT_DIR]
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -20,7 +21,7 @@ render() {
   shift 4
   echo "gallery: $name"
   "$bin" surface "$patterns/$exemplar.pat" --mesh "$meshes/$mesh.off" --vertices "$vertices" "$@" \
-    -o "$work/$name.ply" --render "$work/$name.png" --render-size 512 --views 2 --quiet
+    -o "$work/$name.ply" --render "$work/$name.png" --views 2 --quiet
   gmic -v - "$work/$name.png" -o "$out/surface_$name.jpg,88" >/dev/null
 }
 
@@ -29,4 +30,5 @@ render elephant_rock elephant Stone/rock 200000
 render cow_pine cow Wood/pine 48000
 render cow_pine_sketch cow Wood/pine 48000 --sketch examples/sketches/cow.json
 render armadillo_leaves armadillo Plant/leaves 48000
+render bunny_brick bunny00 Stone/brick 48000
 echo "wrote $out/surface_*.jpg"
