@@ -23,7 +23,7 @@ inline Vec2f wrapCoordinates(const Vec2f& c, int width, int height) {
 }
 
 inline std::int32_t nearestPixel(const Vec2f& c, int width, int height) {
-  const int x = wrapIndex(int(std::lround(c.x())), width), y = wrapIndex(int(std::lround(c.y())), height);
+  const int x = wrapNear(roundHalfAway(c.x()), width), y = wrapNear(roundHalfAway(c.y()), height);
   return std::int32_t(y) * width + x;
 }
 
@@ -46,7 +46,7 @@ struct NearestLookup {
   const Image& image;
   int channels;
   const float* operator()(float x, float y) const {
-    return image.pixel(wrapIndex(int(std::lround(x)), image.width), wrapIndex(int(std::lround(y)), image.height));
+    return image.pixel(wrapNear(roundHalfAway(x), image.width), wrapNear(roundHalfAway(y), image.height));
   }
 };
 

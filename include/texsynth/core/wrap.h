@@ -17,6 +17,20 @@ constexpr int wrapOnce(int i, int n) {
   return i < 0 ? i + n : (i >= n ? i - n : i);
 }
 
+// i mod n, without a division for the usual i within one period of [0, n).
+constexpr int wrapNear(int i, int n) {
+  return i >= -n && i < 2 * n ? wrapOnce(i, n) : wrapIndex(i, n);
+}
+
+// std::lround (halves away from zero) for |x| < 2^23, where x minus its truncation is exact,
+// without the library call: the surface solvers round every member they look up (lroundf was a
+// tenth of a surface E+M step).
+constexpr int roundHalfAway(float x) {
+  const int r = int(x);
+  const float part = x - float(r);
+  return r + int(part >= 0.5f) - int(part <= -0.5f);
+}
+
 // Exact quotient of non-negative ints below 2^24 by a fixed divisor through a multiply and a
 // shift (a division costs tens of cycles; the solvers split every exemplar pixel index into x
 // and y): with M = floor(2^40 / d) + 1, floor(n M / 2^40) = floor(n / d) for n < 2^24.
