@@ -33,6 +33,7 @@ struct AnimateArgs {
   std::vector<std::string> outputs;
   int frames = 120, iterations = 1, vertices = 48000, levels = 3, renderSize = 512;
   float coherence = FlowAnimationOptions{}.coherence, flowScale = 1.0f, fps = 24.0f;
+  float featureWeight = kSurfaceFeatureWeight;
 };
 
 // Peak memory of a 2D animation (frame 0's synthesis, then each frame's positions, sources,
@@ -42,7 +43,7 @@ constexpr double kBaseBytes = 96.0 * 1024 * 1024, kBytesPerPixel = 160.0;
 
 const std::vector<ModeFlag> kAnimateModeFlags = {
     {"--size", {"image"}}, {"--vertices", {"mesh"}}, {"--field", {"mesh"}},       {"--sketch", {"mesh"}},
-    {"--up", {"mesh"}},    {"--camera", {"mesh"}},   {"--render-size", {"mesh"}},
+    {"--up", {"mesh"}},    {"--camera", {"mesh"}},   {"--render-size", {"mesh"}}, {"--feature-weight", {"mesh"}},
 };
 
 // --flow checked as typed: a preset's keys and values, or a well-formed file pattern.
@@ -153,7 +154,7 @@ void runSurfaceAnimation(const CLI::App& parser, const AnimateArgs& args, const 
   setupArgs.exemplar = args.exemplar, setupArgs.mesh = args.mesh, setupArgs.field = args.field;
   setupArgs.sketch = args.sketch, setupArgs.up = args.up, setupArgs.vertices = args.vertices;
   setupArgs.levels = args.levels, setupArgs.levelsGiven = parser.count("--levels") > 0;
-  setupArgs.verticesGiven = parser.count("--vertices") > 0;
+  setupArgs.verticesGiven = parser.count("--vertices") > 0, setupArgs.featureWeight = args.featureWeight;
   json report;
   auto progress = makeProgress(globals);
   const SurfaceSetup setup = setUpSurface(setupArgs, globals, report, *progress);
@@ -322,6 +323,10 @@ Command registerAnimateCommand(CLI::App& app, const GlobalOptions& globals) {
                   std::string("With --mesh: X,Y,Z world up (the default field and `downhill`; default 0,1,0), and the "
                               "rendered model's up (default: ") +
                       kViewUpRule + ")");
+  sub->add_option("--feature-weight", args->featureWeight,
+                  "With --mesh: weight of the feature channel (as `texsynth surface --feature-weight`)")
+      ->capture_default_str()
+      ->check(finiteIn(0, 10));
   sub->add_option("--camera", args->camera, "With --mesh: 'fixed' or 'orbit' (one turn over the animation)")
       ->capture_default_str();
   sub->add_option("--render-size", args->renderSize, "With --mesh: pixel size of the rendered frames")

@@ -26,10 +26,10 @@ using nlohmann::json;
 
 // Flags only synthesis uses: --apply-coords looks a stored synthesis up, it synthesizes nothing.
 const std::vector<ModeFlag> kSurfaceModeFlags = {
-    {"--mesh", {"synthesis"}},       {"--vertices", {"synthesis"}}, {"--levels", {"synthesis"}},
-    {"--iterations", {"synthesis"}}, {"--field", {"synthesis"}},    {"--sketch", {"synthesis"}},
-    {"--up", {"synthesis"}},         {"--coords", {"synthesis"}},   {"--bake", {"synthesis"}},
-    {"--bake-size", {"synthesis"}},
+    {"--mesh", {"synthesis"}},       {"--vertices", {"synthesis"}},       {"--levels", {"synthesis"}},
+    {"--iterations", {"synthesis"}}, {"--field", {"synthesis"}},          {"--sketch", {"synthesis"}},
+    {"--up", {"synthesis"}},         {"--coords", {"synthesis"}},         {"--bake", {"synthesis"}},
+    {"--bake-size", {"synthesis"}},  {"--feature-weight", {"synthesis"}},
 };
 
 // Every usage check, before any file is read.
@@ -117,7 +117,8 @@ void runSurface(const CLI::App& parser, const SurfaceArgs& args, const GlobalOpt
                              args.iterations,
                              parser.count("--levels") > 0,
                              !args.bake.empty(),
-                             parser.count("--vertices") > 0};
+                             parser.count("--vertices") > 0,
+                             args.featureWeight};
   json report;
   auto progress = makeProgress(globals);
   SurfaceSetup setup = setUpSurface(setupArgs, globals, report, *progress);
@@ -225,6 +226,12 @@ Command registerSurfaceCommand(CLI::App& app, const GlobalOptions& globals) {
                   "changes (paper: 1-3)")
       ->capture_default_str()
       ->check(integerIn(1, 20));
+  sub->add_option("--feature-weight", args->featureWeight,
+                  "Weight of the feature channel: the distance to the exemplar's distinctive colors (its cracks, "
+                  "veins, mortar: the fifth farthest from its median color), matched beside the colors so thin "
+                  "features survive (Lefebvre & Hoppe 2006); colors span 0..1; 0 = colors alone")
+      ->capture_default_str()
+      ->check(finiteIn(0, 10));
   auto* field = inputFiles(
       sub->add_option("--field", args->field,
                       "Rotation field (.tsfield from `texsynth field`) whose local x axis is the up direction"));

@@ -35,7 +35,7 @@ json demoSurfaceSynthesis(const Mesh& mesh, const std::string& meshName, const I
   options.seed = seed;
   auto start = std::chrono::steady_clock::now();
   std::vector<ExemplarAnalysis> analyses;
-  for (const AnalysisOptions& analysisOptions : optimizationAnalysisOptions(options))
+  for (const AnalysisOptions& analysisOptions : surfaceAnalysisOptions(exemplar, options))
     analyses.push_back(analyzeExemplarCached(exemplar, analysisOptions, cacheDirectory));
   section["analysis_seconds"] = secondsSince(start);
 
@@ -90,7 +90,9 @@ std::string surfaceMarkdown(const json& surface) {
         "a continuous exemplar coordinate: coarse to fine, k-coherence synthesis as 2D `parallel` "
         "(random coherent patches, upsampling through the parent triangles, jitter, correction of "
         "every vertex's 5x5 flattened neighbourhood), then the E+M steps of 2D `optimize` on those "
-        "coordinates (17x17 then 9x9 neighborhoods), whose result is kept unless it makes a level "
+        "coordinates (17x17 then 9x9 neighborhoods), both matching colors and the distance to the "
+        "exemplar's distinctive colors (a feature channel that keeps thin features), whose result is "
+        "kept unless it makes a level "
         "flat or loses the exemplar's distinctive colors (kept at "
      << surface["refined_levels_kept"] << " of " << surface["refined_levels"] << " levels here).\n\n";
   md << "| stage | seconds |\n|---|---:|\n";

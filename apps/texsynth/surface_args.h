@@ -7,6 +7,7 @@
 
 #include "texsynth/core/mesh.h"
 #include "texsynth/core/progress.h"
+#include "texsynth/surface/surface_synthesis.h"
 
 namespace texsynth::cli {
 
@@ -14,6 +15,7 @@ struct SurfaceArgs {
   std::string exemplar, mesh, field, sketch, up, render, stats, coords, applyCoords, bake;
   std::vector<std::string> outputs;
   int vertices = 48000, levels = 3, iterations = 2, renderSize = 768, views = 2, bakeSize = 2048;
+  float featureWeight = kSurfaceFeatureWeight;
 };
 
 // What a run made: the retiled mesh with colors, and the synthesis behind them.

@@ -89,7 +89,8 @@ SurfaceSetup setUpSurface(const SurfaceSetupArgs& args, const GlobalOptions& glo
                      {"welded_vertices", welded.mesh.vertexCount()}};
   report["read_seconds"] = timer.lap();
   const std::string cache = defaultCacheDirectory();
-  for (const AnalysisOptions& analysisOptions : optimizationAnalysisOptions(options))
+  report["feature_weight"] = args.featureWeight;
+  for (const AnalysisOptions& analysisOptions : surfaceAnalysisOptions(setup.exemplar, options, args.featureWeight))
     setup.analyses.push_back(analyzeExemplarCached(setup.exemplar, analysisOptions, cache, progress));
   report["analysis_seconds"] = timer.lap();
 

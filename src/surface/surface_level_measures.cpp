@@ -7,6 +7,7 @@
 
 #include "texsynth/core/parallel.h"
 #include "texsynth/eval/histogram_distance.h"
+#include "texsynth/exemplar/distinctive_colors.h"
 #include "texsynth/image/flat_patch_share.h"
 #include "texsynth/surface/surface_parallel.h"
 
@@ -40,23 +41,9 @@ SurfaceLevelMeasures measureSurfaceLevel(const SurfaceStencil& stencil, const Ex
 
   // Distinctive colors: farther from the per-channel median than the exemplar's 80th percentile.
   const std::size_t pixelCount = std::size_t(image.width) * image.height;
-  std::vector<float> median(static_cast<std::size_t>(channels)), values(pixelCount);
-  for (int c = 0; c < channels; ++c) {
-    for (std::size_t p = 0; p < pixelCount; ++p) values[p] = image.pixels[p * channels + std::size_t(c)];
-    std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(pixelCount / 2), values.end());
-    median[std::size_t(c)] = values[pixelCount / 2];
-  }
-  auto fromMedian = [&](const float* color) {
-    float sum = 0;
-    for (int c = 0; c < channels; ++c) sum += (color[c] - median[std::size_t(c)]) * (color[c] - median[std::size_t(c)]);
-    return sum;
-  };
-  for (std::size_t p = 0; p < pixelCount; ++p) values[p] = fromMedian(image.pixels.data() + p * channels);
-  const std::size_t fifth = pixelCount * 4 / 5;
-  std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(fifth), values.end());
-  const float far = values[fifth];
+  const DistinctiveColors isDistinctive(image, channels, kDistinctivePercent);
   std::size_t distinctive = 0;
-  for (std::size_t v = 0; v < coordinates.size(); ++v) distinctive += fromMedian(colors.data() + v * channels) > far;
+  for (std::size_t v = 0; v < coordinates.size(); ++v) distinctive += isDistinctive(colors.data() + v * channels);
   measures.distinctive = coordinates.empty() ? 0.0 : double(distinctive) / double(coordinates.size());
 
   // Wasserstein-1 per channel between the vertices' values and the level's pixels.

@@ -4,12 +4,14 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <string>
 
 #include "texsynth/core/error.h"
 #include "texsynth/core/parallel.h"
 #include "texsynth/core/random.h"
 #include "texsynth/core/timing.h"
+#include "texsynth/exemplar/distinctive_colors.h"
 #include "texsynth/image/discrete_steps.h"
 #include "texsynth/surface/surface_level_measures.h"
 #include "texsynth/surface/surface_optimization.h"
@@ -58,6 +60,21 @@ void validate(std::span<const ExemplarAnalysis> analyses, const PreparedSurface&
 // which flatness cannot see when most of the exemplar's patches are flat): at least this share
 // of the start's must stay.
 constexpr double kFlatnessTolerance = 0.025, kHistogramTolerance = 1.5, kDistinctiveShare = 0.9;
+
+std::vector<AnalysisOptions> surfaceAnalysisOptions(const Image& exemplar, const TextureOptimizationOptions& options,
+                                                    float featureWeight) {
+  std::vector<AnalysisOptions> analyses = optimizationAnalysisOptions(options);
+  if (!(featureWeight >= 0) || !std::isfinite(featureWeight))
+    throw ParameterError("feature weight", std::to_string(featureWeight) + " is not a finite weight >= 0");
+  if (featureWeight == 0) return analyses;
+  const Image mask = distinctiveFeatureMask(exemplar, kDistinctivePercent);
+  if (mask.empty()) return analyses;
+  for (AnalysisOptions& analysis : analyses) {
+    analysis.featureMask = mask;
+    analysis.featureWeight = featureWeight;
+  }
+  return analyses;
+}
 
 SurfaceSynthesisResult synthesizeSurface(std::span<const ExemplarAnalysis> analyses, const PreparedSurface& surface,
                                          const TextureOptimizationOptions& options, Progress& progress,

@@ -12,6 +12,7 @@
 
 #include "mesh_test_support.h"
 #include "test_support.h"
+#include "texsynth/core/error.h"
 #include "texsynth/core/mesh_weld.h"
 #include "texsynth/eval/histogram_distance.h"
 #include "texsynth/exemplar/analysis.h"
@@ -47,10 +48,11 @@ struct Synthesized {
   PreparedSurface surface;
   SurfaceSynthesisResult result;
 
-  Synthesized(const Image& exemplar, const Mesh& mesh, int vertices, const SurfaceStartOptions& start = {}) {
+  Synthesized(const Image& exemplar, const Mesh& mesh, int vertices, const SurfaceStartOptions& start = {},
+              float featureWeight = kSurfaceFeatureWeight) {
     options.levels = 2;
     options.neighborhoodSizes = {9, 5};
-    for (const AnalysisOptions& analysisOptions : optimizationAnalysisOptions(options))
+    for (const AnalysisOptions& analysisOptions : surfaceAnalysisOptions(exemplar, options, featureWeight))
       analyses.push_back(analyzeExemplar(exemplar, analysisOptions));
     MeshHierarchyOptions hierarchy;
     hierarchy.vertices = vertices;
@@ -209,7 +211,7 @@ TEST(SurfaceParallel, TheFinestLevelsHistogramBandKeepsThinVeins) {
   plainOptions.refine = false;  // the start alone (cheaper, and the band is the start's)
   SurfaceStartOptions bandOptions = plainOptions;
   bandOptions.finestHistogramBand = SurfaceStartOptions{}.finestHistogramBand;
-  const Synthesized plain(exemplar, test::icosphere(3), 1600, plainOptions);
+  const Synthesized plain(exemplar, test::icosphere(3), 1600, plainOptions, 0.0f);
   const SurfaceSynthesisResult band = plain.rerun(bandOptions);
   const double before = histogramOf(exemplar, plain.result.colors), after = histogramOf(exemplar, band.colors);
   EXPECT_LT(after, 0.85 * before) << "histogram distance " << before << " without, " << after << " with the band";
@@ -219,6 +221,31 @@ TEST(SurfaceParallel, TheFinestLevelsHistogramBandKeepsThinVeins) {
   const float bandDistance = median(stencilDistances(stencil, plain.analyses.back(), 1, band.coordinates));
   EXPECT_LT(bandDistance, 1.25f * plainDistance + 1e-4f)
       << "median stencil distance " << plainDistance << " / " << bandDistance;
+}
+
+TEST(SurfaceParallel, TheFeatureChannelKeepsThinVeins) {
+  // Colors alone against colors and the distance to the distinctive (vein) pixels, at the defaults.
+  const Image exemplar = veinedExemplar();
+  const Synthesized colors(exemplar, test::icosphere(3), 1600, {}, 0.0f);
+  const Synthesized features(exemplar, test::icosphere(3), 1600, {});
+  EXPECT_EQ(colors.analyses.back().channels(), 3);
+  EXPECT_EQ(features.analyses.back().channels(), 4);
+  const double without = histogramOf(exemplar, colors.result.colors);
+  const double with = histogramOf(exemplar, features.result.colors);
+  EXPECT_LT(with, 0.85 * without) << "histogram distance " << without << " without, " << with << " with";
+}
+
+TEST(SurfaceParallel, SurfaceAnalysisOptionsAddTheFeatureMaskOnlyWhereThereAreFeatures) {
+  TextureOptimizationOptions options;
+  for (const AnalysisOptions& analysis : surfaceAnalysisOptions(veinedExemplar(), options)) {
+    EXPECT_FALSE(analysis.featureMask.empty());
+    EXPECT_EQ(analysis.featureWeight, kSurfaceFeatureWeight);
+  }
+  for (const AnalysisOptions& analysis : surfaceAnalysisOptions(veinedExemplar(), options, 0.0f))
+    EXPECT_TRUE(analysis.featureMask.empty());
+  for (const AnalysisOptions& analysis : surfaceAnalysisOptions(Image(16, 16, 3, 0.5f), options))
+    EXPECT_TRUE(analysis.featureMask.empty());
+  EXPECT_THROW(surfaceAnalysisOptions(veinedExemplar(), options, -1.0f), ParameterError);
 }
 
 }  // namespace

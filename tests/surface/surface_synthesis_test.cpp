@@ -37,7 +37,7 @@ struct Fixture {
 
   Fixture() {
     const TextureOptimizationOptions options = smallOptions();
-    for (const AnalysisOptions& analysisOptions : optimizationAnalysisOptions(options))
+    for (const AnalysisOptions& analysisOptions : surfaceAnalysisOptions(exemplar, options))
       analyses.push_back(analyzeExemplar(exemplar, analysisOptions));
     // The box's faces keep their own vertices: welded, it is one closed surface.
     const Mesh cube = weldCoincidentVertices(makeBoxMesh(Vec3f::Zero(), Vec3f::Ones())).mesh;

@@ -10,6 +10,10 @@
 
 namespace texsynth {
 
+// The share of an exemplar's pixels that are distinctive (distinctive_colors.h) in surface
+// synthesis: its measures and its feature channel.
+constexpr int kDistinctivePercent = 20;
+
 struct SurfaceLevelMeasures {
   // The share of vertices whose stencil (their own colors, not resampled) has a lower standard
   // deviation than the exemplar level's 10th-percentile neighbourhood of the same size, minus
@@ -25,7 +29,8 @@ struct SurfaceLevelMeasures {
   double distinctive = 0;
 };
 
-// The measures of `coordinates` (one per stencil vertex; nearest-pixel colors of `level`).
+// The measures of `coordinates` (one per stencil vertex; nearest-pixel colors of `level`, its
+// feature channel too where the analysis has one).
 SurfaceLevelMeasures measureSurfaceLevel(const SurfaceStencil& stencil, const ExemplarLevel& level,
                                          std::span<const Vec2f> coordinates);
 

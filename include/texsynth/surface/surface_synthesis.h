@@ -19,6 +19,8 @@
 //   moves its histogram far (surface_level_measures.h; the tolerances in surface_synthesis.cpp):
 //   on flat-background exemplars E+M erodes the sparse features (GIMP cracked on the CGAL dino:
 //   flatness 0.85).
+// Both compare colors and, where the exemplar has distinctive colors, the feature channel of
+// surfaceAnalysisOptions (Lefebvre & Hoppe 2006): the distance to them.
 // The result is a continuous exemplar COORDINATE per vertex (and the nearest pixel, its SOURCE),
 // so colors are looked up at the end and the same synthesis can be re-applied to other maps of
 // the material. Deterministic for any thread count.
@@ -95,6 +97,19 @@ struct SurfaceStartOptions {
   bool finestHoldsUsagePaidMoves = true;
   float finestRefineHistogramWeight = 2.0f;
 };
+
+// The weight of the exemplar's feature channel in surface synthesis (surfaceAnalysisOptions).
+inline constexpr float kSurfaceFeatureWeight = 0.5f;
+
+// The analyses synthesizeSurface reads: optimizationAnalysisOptions(options), each with the
+// feature channel of Lefebvre & Hoppe 2006 made from the exemplar's distinctive colors
+// (distinctive_colors.h; their signed distance, feature_distance.h) at `featureWeight` (colors in
+// 0..1; 0 = none, as for a flat exemplar, which has no distinctive colors). Matching a colour and
+// its distance to the nearest feature keeps thin features (cracks, veins, mortar) that colours
+// alone let the background replace: a neighbourhood a pixel off a crack pays little for its
+// misregistration in the smooth distance, one far from any crack pays for the crack it lacks.
+std::vector<AnalysisOptions> surfaceAnalysisOptions(const Image& exemplar, const TextureOptimizationOptions& options,
+                                                    float featureWeight = kSurfaceFeatureWeight);
 
 // Whether the E+M refinement of one level was kept: the start's and the refined state's
 // measures (surface_level_measures.h).
