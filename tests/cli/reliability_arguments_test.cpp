@@ -285,10 +285,12 @@ std::string sweepCommand(const std::string& command, const HelpOption& option, c
   const auto unless = [&](const char* swept, const std::string& text) { return flag == swept ? "" : " " + text; };
   const std::string smallMesh =
       " --mesh " + in.cube + unless("--vertices", "--vertices 600") + unless("--levels", "--levels 1");
-  if (command == "animate")
-    base = "animate " + in.exemplar + " --flow vortex -o " + out + "/%04d.png" + unless("--frames", "--frames 2") +
-           (d.rfind("With --mesh", 0) == 0 ? smallMesh + unless("--render-size", "--render-size 16")
-                                           : unless("--size", "--size 8"));
+  if (command == "animate") {
+    const bool mesh = d.rfind("With --mesh", 0) == 0;  // a mesh flows along a surface preset
+    base = "animate " + in.exemplar + (mesh ? " --flow swirl" : " --flow vortex") + " -o " + out + "/%04d.png" +
+           unless("--frames", "--frames 2") +
+           (mesh ? smallMesh + unless("--render-size", "--render-size 16") : unless("--size", "--size 8"));
+  }
   if (command == "surface") {
     base = "surface " + in.exemplar + smallMesh + " -o " + out + ".ply";
     if (d.rfind("With --render", 0) == 0)
