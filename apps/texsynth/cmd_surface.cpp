@@ -147,10 +147,11 @@ void runSurface(const CLI::App& parser, const SurfaceArgs& args, const GlobalOpt
   }
   report["first_level"] = synthesis.firstLevel;
   report["steps"] = historyJson(synthesis.history);
-  // Per refined level: the start's and the E+M result's flatness and histogram, and which was kept.
+  // Per refinement (E+M or polish) of a level: the measures before it and of its result, and which was kept.
   report["refinement"] = json::array();
   for (const SurfaceRefinement& r : synthesis.levels)
     report["refinement"].push_back({{"level", r.level},
+                                    {"step", r.step == SurfaceRefinementStep::Polish ? "polish" : "optimization"},
                                     {"start_flatness", r.startFlatness},
                                     {"start_histogram", r.startHistogram},
                                     {"start_distinctive", r.startDistinctive},
@@ -190,7 +191,8 @@ Command registerSurfaceCommand(CLI::App& app, const GlobalOptions& globals) {
       "the mesh is retiled to --vertices near-uniform vertices and every vertex copies one pixel of EXEMPLAR, chosen "
       "so that every neighborhood on the surface looks like a neighborhood of the exemplar: coarse to fine, a "
       "k-coherence synthesis as `image --method parallel` on the mesh hierarchy, refined by the paper's E+M steps "
-      "where that keeps the texture (--stats: refinement). No UV seams, no stretching, no tiling.\n"
+      "and, at the finest level, a last correction pass, each where it keeps the texture (--stats: refinement). No UV "
+      "seams, no stretching, no tiling.\n"
       "  Texture density: one exemplar pixel per vertex spacing, so --vertices sets the scale: a 128-pixel-wide "
       "exemplar spans 128 vertex spacings of the surface. More vertices: smaller features, more repetitions and a "
       "finer result, at about linear cost.\n"

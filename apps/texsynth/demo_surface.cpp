@@ -67,10 +67,19 @@ json demoSurfaceSynthesis(const Mesh& mesh, const std::string& meshName, const I
   section["histogram"] = quality.histogram;
   section["flatness"] = quality.flatness;
   section["completeness"] = quality.completeness;
-  int kept = 0;
-  for (const SurfaceRefinement& refinement : result.levels) kept += refinement.kept;
+  int optimized = 0, kept = 0;
+  bool polished = false;
+  for (const SurfaceRefinement& refinement : result.levels) {
+    if (refinement.step == SurfaceRefinementStep::Polish) {
+      polished = refinement.kept;
+      continue;
+    }
+    ++optimized;
+    kept += refinement.kept;
+  }
   section["refined_levels_kept"] = kept;
-  section["refined_levels"] = result.levels.size();
+  section["refined_levels"] = optimized;
+  section["polish_kept"] = polished;
 
   RenderOptions render;
   render.width = render.height = 384;
@@ -94,7 +103,10 @@ std::string surfaceMarkdown(const json& surface) {
         "exemplar's distinctive colors (a feature channel that keeps thin features), whose result is "
         "kept unless it makes a level "
         "flat or loses the exemplar's distinctive colors (kept at "
-     << surface["refined_levels_kept"] << " of " << surface["refined_levels"] << " levels here).\n\n";
+     << surface["refined_levels_kept"] << " of " << surface["refined_levels"]
+     << " levels here), and at the finest level a last correction pass without the usage term under the "
+        "same rule ("
+     << (surface["polish_kept"].get<bool>() ? "kept" : "refused") << " here).\n\n";
   md << "| stage | seconds |\n|---|---:|\n";
   md << "| mesh hierarchy (cached for the next run) | " << fixed3(surface["hierarchy_seconds"]) << " |\n";
   md << "| tangent field and resampled neighborhoods | " << fixed3(surface["prepare_seconds"]) << " |\n";

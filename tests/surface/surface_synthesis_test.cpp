@@ -1,12 +1,13 @@
 // Surface synthesis end to end on a small closed mesh (hierarchy, preparation, synthesis): every
 // vertex gets a valid source, the plain discrete energy never rises within a level and
-// neighborhood size, the result does not depend on the thread count, colorsOfSources checks its
-// sources.
+// neighborhood size, the result does not depend on the thread count, the finest level's polish
+// brings it closer to coherent copies, colorsOfSources checks its sources.
 #include "texsynth/surface/surface_synthesis.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <span>
 
 #include "test_support.h"
 #include "texsynth/core/error.h"
@@ -14,6 +15,7 @@
 #include "texsynth/core/parallel.h"
 #include "texsynth/exemplar/analysis.h"
 #include "texsynth/render/primitives.h"
+#include "texsynth/surface/surface_parallel.h"
 
 using namespace texsynth;
 
@@ -114,6 +116,35 @@ TEST(SurfaceSynthesis, SameSeedSameSourcesForAnyThreadCount) {
   TextureOptimizationOptions other = smallOptions();
   other.seed = 9;
   EXPECT_NE(f.run(other).sources, one);
+}
+
+double meanFinestStencilDistance(const Fixture& f, std::span<const Vec2f> coordinates) {
+  const std::vector<float> distances = stencilDistances(f.surface.levels.back().stencil, f.analyses.back(),
+                                                        f.analyses.back().levelCount() - 1, coordinates);
+  double sum = 0;
+  for (float d : distances) sum += d;
+  return sum / double(distances.size());
+}
+
+TEST(SurfaceSynthesis, ThePolishRunsLastAtTheFinestLevelAndBringsItCloserToCoherentCopies) {
+  const Fixture& f = fixture();
+  const SurfaceSynthesisResult polished = f.run(smallOptions());
+  SurfaceStartOptions none;
+  none.finestPolishPasses = 0;
+  const SurfaceSynthesisResult unpolished = f.run(smallOptions(), none);
+  ASSERT_FALSE(polished.levels.empty());
+  const SurfaceRefinement& polish = polished.levels.back();
+  EXPECT_EQ(polish.step, SurfaceRefinementStep::Polish);
+  EXPECT_EQ(polish.level, smallOptions().levels - 1);
+  for (const SurfaceRefinement& r : unpolished.levels) EXPECT_EQ(r.step, SurfaceRefinementStep::Optimization);
+  ASSERT_EQ(unpolished.levels.size() + 1, polished.levels.size());
+  ASSERT_TRUE(polish.kept) << "flatness " << polish.startFlatness << " -> " << polish.refinedFlatness << ", histogram "
+                           << polish.startHistogram << " -> " << polish.refinedHistogram;
+  // Each vertex takes its best match among its neighbours' proposals: the mean distance to a
+  // coherent copy of the exemplar falls.
+  const double before = meanFinestStencilDistance(f, unpolished.coordinates);
+  const double after = meanFinestStencilDistance(f, polished.coordinates);
+  EXPECT_LT(after, 0.8 * before) << before << " -> " << after;
 }
 
 TEST(SurfaceSynthesis, ColorsOfSourcesChecksItsSourcesAndChannels) {
