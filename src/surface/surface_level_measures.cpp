@@ -1,4 +1,5 @@
-// Flatness and histogram distance of one level's coordinates (surface_level_measures.h).
+// Flatness, histogram distance and distinctive share of one level's coordinates, and the rule
+// that keeps a refinement by them (surface_level_measures.h).
 #include "texsynth/surface/surface_level_measures.h"
 
 #include <algorithm>
@@ -12,6 +13,17 @@
 #include "texsynth/surface/surface_parallel.h"
 
 namespace texsynth {
+
+namespace {
+constexpr double kFlatnessTolerance = 0.025, kHistogramTolerance = 1.5, kHistogramFloor = 0.003,
+                 kDistinctiveShare = 0.9;
+}  // namespace
+
+bool keepsTheTexture(const SurfaceLevelMeasures& before, const SurfaceLevelMeasures& after) {
+  return after.flatness <= std::max(before.flatness, 0.0) + kFlatnessTolerance &&
+         after.distinctive >= kDistinctiveShare * before.distinctive &&
+         after.histogram <= std::max(kHistogramTolerance * before.histogram, kHistogramFloor);
+}
 
 SurfaceLevelMeasures measureSurfaceLevel(const SurfaceStencil& stencil, const ExemplarLevel& level,
                                          std::span<const Vec2f> coordinates) {

@@ -47,35 +47,16 @@ void validate(std::span<const ExemplarAnalysis> analyses, const PreparedSurface&
 
 }  // namespace
 
-// The refinement is kept unless it makes the level flat or moves its colors far from the
-// exemplar's. Flatness may rise a little while it stays near a faithful texture's 0 (half the
-// 0.05 that reads as textured everywhere): the refinement lowers the coherence by 10-20% (GIMP
-// brick, bark, pink marble, granite, burlap on the CGAL bunny, leaves on the elephant) while
-// the flatness of their levels moves from -0.09..-0.04 to -0.04..0.02; on flat-background
-// exemplars it collapses them (cracked on the dino: 0.85) and is refused. Its histogram distance
-// may grow up to 1.5x (2x before the start's finest level matched histograms, surface_parallel.h;
-// the two were tuned together, 8 exemplars on the cow and the dino: within 1.5x 2D optimize's
-// histogram distance on 12 of 16 pairs; 1.1x at the finest level changed one pair of 10, dino
-// leaves, coherence 7.56 -> 9.46 and histogram 1.50 -> 1.01).
-// Nor may it lose the exemplar's distinctive colors (sparse dark features on a flat ground,
-// which flatness cannot see when most of the exemplar's patches are flat): at least this share
-// of the start's must stay. The finest level's polish answers to the same rule: of 48 pairs
-// (bench/surface_synthesis.sh) it is refused on bark three times and burlap once (histogram
-// 1.6-4.2x at that level) and on cracked four times (flatness up to 0.026-0.038).
-constexpr double kFlatnessTolerance = 0.025, kHistogramTolerance = 1.5, kDistinctiveShare = 0.9;
-
 namespace {
 
 // Measures a level's state and a candidate for it (its E+M refinement or its polish); the
-// candidate replaces the state when it passes the tolerances above.
+// candidate replaces the state when it keeps the texture (surface_level_measures.h).
 SurfaceRefinement keepUnlessHarmful(SurfaceRefinementStep step, const SurfaceStencil& stencil,
                                     const ExemplarLevel& stack, int level, std::vector<Vec2f>& state,
                                     std::vector<Vec2f>& candidate) {
   const SurfaceLevelMeasures before = measureSurfaceLevel(stencil, stack, state);
   const SurfaceLevelMeasures after = measureSurfaceLevel(stencil, stack, candidate);
-  const bool kept = after.flatness <= std::max(before.flatness, 0.0) + kFlatnessTolerance &&
-                    after.distinctive >= kDistinctiveShare * before.distinctive &&
-                    after.histogram <= kHistogramTolerance * before.histogram;
+  const bool kept = keepsTheTexture(before, after);
   if (kept) state.swap(candidate);
   return {level,
           step,
@@ -153,8 +134,7 @@ SurfaceSynthesisResult synthesizeSurface(std::span<const ExemplarAnalysis> analy
     }
     const ExemplarLevel& stack = base.levels[std::size_t(level)];
     if (refine) {
-      // The discrete optimization on top; its result replaces the start unless it fails the
-      // tolerances above.
+      // The discrete optimization on top; its result replaces the start where it keeps the texture.
       std::vector<Vec2f> refined = coordinates;
       std::vector<OptimizationIteration> history;
       for (std::size_t scale = 0; scale < options.neighborhoodSizes.size(); ++scale)

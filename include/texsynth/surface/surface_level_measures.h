@@ -29,6 +29,30 @@ struct SurfaceLevelMeasures {
   double distinctive = 0;
 };
 
+// Whether a refinement of a level (its E+M optimization or the finest level's polish) keeps the
+// texture: `after`, its result's measures, against `before`, the state it would replace.
+// It may not make the level flat or move its colors far from the exemplar's. Flatness may rise a
+// little while it stays near a faithful texture's 0 (half the 0.05 that reads as textured
+// everywhere): the refinement lowers the coherence by 10-20% (GIMP brick, bark, pink marble,
+// granite, burlap on the CGAL bunny, leaves on the elephant) while the flatness of their levels
+// moves from -0.09..-0.04 to -0.04..0.02; on flat-background exemplars it collapses them (cracked
+// on the dino: 0.85) and is refused. Its histogram distance may grow up to 1.5x (2x before the
+// start's finest level matched histograms, surface_parallel.h; the two were tuned together, 8
+// exemplars on the cow and the dino: within 1.5x 2D optimize's histogram distance on 12 of 16
+// pairs; 1.1x at the finest level changed one pair of 10, dino leaves, coherence 7.56 -> 9.46
+// and histogram 1.50 -> 1.01), or to the floor below, whichever is larger: under 0.003 (less
+// than one 8-bit level of mean shift) a histogram reads as the exemplar's, and 1.5x of a
+// near-perfect histogram is noise that refused useful refinements (GIMP leaves on the CGAL
+// sphere: 0.0012 -> 0.0024, coherence 8.89 with the refusal, 8.40 with the floor). With the
+// floor, 6 CGAL meshes x 8 GIMP exemplars (bench/surface_synthesis.sh): seed 1, all three targets
+// on 39 pairs (36 without), worst coherence 1.63x -> 1.45x 2D's; seed 3, 40 (40).
+// Nor may it lose the exemplar's distinctive colors (sparse dark features on a flat ground,
+// which flatness cannot see when most of the exemplar's patches are flat): at least 0.9 of the
+// state's must stay. Of the finest level's polishes on those 48 pairs (seed 3) the rule refuses
+// bark three times and burlap once (histogram 1.6-4.2x at that level) and cracked four times
+// (flatness up to 0.026-0.038).
+bool keepsTheTexture(const SurfaceLevelMeasures& before, const SurfaceLevelMeasures& after);
+
 // The measures of `coordinates` (one per stencil vertex; nearest-pixel colors of `level`, its
 // feature channel too where the analysis has one).
 SurfaceLevelMeasures measureSurfaceLevel(const SurfaceStencil& stencil, const ExemplarLevel& level,

@@ -16,10 +16,10 @@
 //   the usage term and random candidates of 2D optimize, strongest-vote E-step, votes within a
 //   pixel counted together), where the largest neighborhood fits the exemplar. The refined state
 //   replaces the start unless it makes the level flat, loses the exemplar's distinctive colors or
-//   moves its histogram far (surface_level_measures.h; the tolerances in surface_synthesis.cpp):
-//   on flat-background exemplars E+M erodes the sparse features (GIMP cracked on the CGAL dino:
-//   flatness 0.85).
-// Both compare colors and, where the exemplar has distinctive colors, the feature channel of
+//   moves its histogram far (keepsTheTexture, surface_level_measures.h): on flat-background
+//   exemplars E+M erodes the sparse features (GIMP cracked on the CGAL dino: flatness 0.85). At
+//   the finest level a polish follows under the same rule (SurfaceStartOptions).
+// All compare colors and, where the exemplar has distinctive colors, the feature channel of
 // surfaceAnalysisOptions (Lefebvre & Hoppe 2006): the distance to them.
 // The result is a continuous exemplar COORDINATE per vertex (and the nearest pixel, its SOURCE),
 // so colors are looked up at the end and the same synthesis can be re-applied to other maps of

@@ -1,0 +1,46 @@
+// The rule that keeps a level's refinement (keepsTheTexture): not flatter than a faithful texture
+// allows, the distinctive colors kept, the histogram at most 1.5x as far or under the floor.
+#include "texsynth/surface/surface_level_measures.h"
+
+#include <gtest/gtest.h>
+
+using namespace texsynth;
+
+namespace {
+
+SurfaceLevelMeasures measures(double flatness, double histogram, double distinctive) {
+  SurfaceLevelMeasures m;
+  m.flatness = flatness, m.histogram = histogram, m.distinctive = distinctive;
+  return m;
+}
+
+const SurfaceLevelMeasures kStart = measures(-0.06, 0.010, 0.20);
+
+TEST(KeepsTheTexture, KeepsARefinementThatChangesLittle) {
+  EXPECT_TRUE(keepsTheTexture(kStart, kStart));
+  EXPECT_TRUE(keepsTheTexture(kStart, measures(0.02, 0.014, 0.19)));
+}
+
+TEST(KeepsTheTexture, RefusesAFlatterLevel) {
+  EXPECT_FALSE(keepsTheTexture(kStart, measures(0.03, 0.010, 0.20)));  // past 0.025 above a faithful 0
+  // Above 0 the tolerance counts from the state itself.
+  EXPECT_TRUE(keepsTheTexture(measures(0.1, 0.010, 0.20), measures(0.12, 0.010, 0.20)));
+  EXPECT_FALSE(keepsTheTexture(measures(0.1, 0.010, 0.20), measures(0.13, 0.010, 0.20)));
+}
+
+TEST(KeepsTheTexture, RefusesLostDistinctiveColors) {
+  EXPECT_TRUE(keepsTheTexture(kStart, measures(-0.06, 0.010, 0.181)));
+  EXPECT_FALSE(keepsTheTexture(kStart, measures(-0.06, 0.010, 0.179)));  // under 0.9 of 0.2
+}
+
+TEST(KeepsTheTexture, RefusesAFarHistogramButNotNoiseUnderTheFloor) {
+  EXPECT_TRUE(keepsTheTexture(kStart, measures(-0.06, 0.0149, 0.20)));
+  EXPECT_FALSE(keepsTheTexture(kStart, measures(-0.06, 0.0151, 0.20)));
+  // A near-perfect histogram may double while it stays under 0.003 ...
+  const SurfaceLevelMeasures nearPerfect = measures(-0.06, 0.0012, 0.20);
+  EXPECT_TRUE(keepsTheTexture(nearPerfect, measures(-0.06, 0.0029, 0.20)));
+  // ... but not past it.
+  EXPECT_FALSE(keepsTheTexture(nearPerfect, measures(-0.06, 0.0031, 0.20)));
+}
+
+}  // namespace
