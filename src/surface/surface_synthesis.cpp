@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "texsynth/core/error.h"
@@ -49,15 +50,21 @@ void validate(std::span<const ExemplarAnalysis> analyses, const PreparedSurface&
 
 namespace {
 
-// Measures a level's state and a candidate for it (its E+M refinement or its polish); the
-// candidate replaces the state when it keeps the texture (surface_level_measures.h).
+// Measures a candidate for a level's state (its E+M refinement or its polish) and, unless
+// `stateMeasures` already holds them, the state; the candidate replaces the state when it keeps the
+// texture (surface_level_measures.h). `stateMeasures` ends holding the measures of the state kept,
+// so the level's next refinement does not measure it again.
 SurfaceRefinement keepUnlessHarmful(SurfaceRefinementStep step, const SurfaceStencil& stencil,
                                     const ExemplarLevel& stack, int level, std::vector<Vec2f>& state,
-                                    std::vector<Vec2f>& candidate) {
-  const SurfaceLevelMeasures before = measureSurfaceLevel(stencil, stack, state);
+                                    std::optional<SurfaceLevelMeasures>& stateMeasures, std::vector<Vec2f>& candidate) {
+  if (!stateMeasures) stateMeasures = measureSurfaceLevel(stencil, stack, state);
+  const SurfaceLevelMeasures before = *stateMeasures;
   const SurfaceLevelMeasures after = measureSurfaceLevel(stencil, stack, candidate);
   const bool kept = keepsTheTexture(before, after);
-  if (kept) state.swap(candidate);
+  if (kept) {
+    state.swap(candidate);
+    stateMeasures = after;
+  }
   return {level,
           step,
           before.flatness,
@@ -133,6 +140,7 @@ SurfaceSynthesisResult synthesizeSurface(std::span<const ExemplarAnalysis> analy
       progress.advance(1);
     }
     const ExemplarLevel& stack = base.levels[std::size_t(level)];
+    std::optional<SurfaceLevelMeasures> measures;  // of `coordinates`, once a refinement has measured them
     if (refine) {
       // The discrete optimization on top; its result replaces the start where it keeps the texture.
       std::vector<Vec2f> refined = coordinates;
@@ -140,8 +148,8 @@ SurfaceSynthesisResult synthesizeSurface(std::span<const ExemplarAnalysis> analy
       for (std::size_t scale = 0; scale < options.neighborhoodSizes.size(); ++scale)
         optimizeSurfaceCoordinates(prepared.neighborhoods[scale], base, level, scale, options, refined, history,
                                    progress, finest ? startOptions.finestRefineHistogramWeight : 0.0f);
-      result.levels.push_back(
-          keepUnlessHarmful(SurfaceRefinementStep::Optimization, prepared.stencil, stack, level, coordinates, refined));
+      result.levels.push_back(keepUnlessHarmful(SurfaceRefinementStep::Optimization, prepared.stencil, stack, level,
+                                                coordinates, measures, refined));
       result.history.insert(result.history.end(), history.begin(), history.end());
     }
     if (polishes > 0) {
@@ -154,8 +162,8 @@ SurfaceSynthesisResult synthesizeSurface(std::span<const ExemplarAnalysis> analy
         correctSurfaceCoordinates(prepared.stencil, base, level, polish, polished);
         progress.advance(1);
       }
-      result.levels.push_back(
-          keepUnlessHarmful(SurfaceRefinementStep::Polish, prepared.stencil, stack, level, coordinates, polished));
+      result.levels.push_back(keepUnlessHarmful(SurfaceRefinementStep::Polish, prepared.stencil, stack, level,
+                                                coordinates, measures, polished));
     }
     progress.end();
   }
