@@ -18,9 +18,6 @@
 namespace texsynth {
 namespace {
 
-// How far a repaired frame may drift from frame 0 (as surface synthesis's refinement tolerances).
-constexpr double kFlatnessTolerance = 0.025, kDistinctiveShare = 0.9;
-
 // Continuous coordinates as exemplar positions (the nearest pixel and the rest), and back.
 ExemplarPositions positionsOf(std::span<const Vec2f> coordinates, int width, int height) {
   ExemplarPositions positions{width, height, pixelsOfCoordinates(coordinates, width, height),
@@ -95,8 +92,7 @@ void SurfaceAnimator::advance(std::span<const Vec3f> velocities, Progress& progr
     const ExemplarLevel& finestStack = base.levels.back();
     const SurfaceLevelMeasures solved =
         measureSurfaceLevel(finest.stencil, finestStack, coordinatesOfPixels(solution.sources, base.width));
-    statistics_.solverKept = solved.flatness <= std::max(reference_.flatness, 0.0) + kFlatnessTolerance &&
-                             solved.distinctive >= kDistinctiveShare * reference_.distinctive;
+    statistics_.solverKept = keepsTheFeatures(reference_, solved);
     if (statistics_.solverKept) {
       positions_.keepWhereUnchanged(solution.sources);
       sources_ = std::move(solution.sources);

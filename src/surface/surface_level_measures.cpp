@@ -19,9 +19,13 @@ constexpr double kFlatnessTolerance = 0.025, kHistogramTolerance = 1.5, kHistogr
                  kDistinctiveShare = 0.9;
 }  // namespace
 
-bool keepsTheTexture(const SurfaceLevelMeasures& before, const SurfaceLevelMeasures& after) {
+bool keepsTheFeatures(const SurfaceLevelMeasures& before, const SurfaceLevelMeasures& after) {
   return after.flatness <= std::max(before.flatness, 0.0) + kFlatnessTolerance &&
-         after.distinctive >= kDistinctiveShare * before.distinctive &&
+         after.distinctive >= kDistinctiveShare * before.distinctive;
+}
+
+bool keepsTheTexture(const SurfaceLevelMeasures& before, const SurfaceLevelMeasures& after) {
+  return keepsTheFeatures(before, after) &&
          after.histogram <= std::max(kHistogramTolerance * before.histogram, kHistogramFloor);
 }
 

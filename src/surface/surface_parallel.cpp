@@ -57,21 +57,22 @@ std::vector<Vec2f> patchSurfaceCoordinates(const SurfaceNeighborhoods& neighborh
   return coordinates;
 }
 
-std::vector<Vec2f> upsampleSurfaceCoordinates(const MeshLevel& coarse, std::span<const Vec3f> coarseTangents,
-                                              const MeshLevel& fine, std::span<const Vec2f> coarseCoordinates,
-                                              float pixelsPerUnit, int exemplarWidth, int exemplarHeight) {
-  std::vector<Vec2f> coordinates(fine.mesh.vertexCount());
+std::vector<Vec2f> upsampleSurfaceCoordinates(const Mesh& coarseGeometry, std::span<const Vec3f> coarseTangents,
+                                              const MeshLevel& fine, const Mesh& fineGeometry,
+                                              std::span<const Vec2f> coarseCoordinates, float pixelsPerUnit,
+                                              int exemplarWidth, int exemplarHeight) {
+  std::vector<Vec2f> coordinates(fineGeometry.vertexCount());
   parallelForChunks(0, std::int64_t(coordinates.size()), 4096, [&](std::int64_t begin, std::int64_t end) {
     for (std::int64_t v = begin; v < end; ++v) {
-      const Vec3i& triangle = coarse.mesh.triangles[std::size_t(fine.parentTriangle[std::size_t(v)])];
+      const Vec3i& triangle = coarseGeometry.triangles[std::size_t(fine.parentTriangle[std::size_t(v)])];
       const Vec3f& weights = fine.parentBarycentric[std::size_t(v)];
       int corner = 0;
       for (int k = 1; k < 3; ++k)
         if (weights[k] > weights[corner]) corner = k;
       const auto u = std::size_t(triangle[corner]);
       const Vec3f& t = coarseTangents[u];
-      const Vec3f b = coarse.mesh.normals[u].cross(t);
-      const Vec3f d = fine.mesh.positions[std::size_t(v)] - coarse.mesh.positions[u];
+      const Vec3f b = coarseGeometry.normals[u].cross(t);
+      const Vec3f d = fineGeometry.positions[std::size_t(v)] - coarseGeometry.positions[u];
       const Vec2f& c = coarseCoordinates[u];
       coordinates[std::size_t(v)] = Vec2f(wrapCoordinate(c.x() + d.dot(t) * pixelsPerUnit, exemplarWidth),
                                           wrapCoordinate(c.y() - d.dot(b) * pixelsPerUnit, exemplarHeight));

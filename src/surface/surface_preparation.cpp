@@ -1,11 +1,12 @@
-// The mesh side of surface synthesis: per hierarchy level its topology, tangent field and the
-// resampled neighborhoods of each size.
+// The mesh side of surface synthesis: per hierarchy level its topology, smoothed geometry, tangent
+// field and the resampled neighborhoods of each size.
 #include <chrono>
 #include <string>
 
 #include "texsynth/core/error.h"
 #include "texsynth/core/timing.h"
 #include "texsynth/exemplar/neighborhood.h"
+#include "texsynth/geometry/mesh_smoothing.h"
 #include "texsynth/image/discrete_steps.h"
 #include "texsynth/surface/surface_synthesis.h"
 
@@ -25,21 +26,23 @@ PreparedSurface prepareSurface(MeshHierarchy hierarchy, const SurfaceOrientation
   progress.begin("orient and resample the surface", std::int64_t(hierarchy.levels.size()));
   for (std::size_t l = 0; l < hierarchy.levels.size(); ++l) {
     const MeshLevel& level = hierarchy.levels[l];
-    PreparedSurfaceLevel preparedLevel{MeshTopology(level.mesh, "mesh level " + std::to_string(l + 1)), {}, {}, {}};
+    PreparedSurfaceLevel preparedLevel{MeshTopology(level.mesh, "mesh level " + std::to_string(l + 1)), {}, {}, {}, {}};
+    preparedLevel.geometry = taubinSmoothed(level.mesh, preparedLevel.topology, orientation.geometrySmoothing);
+    const Mesh& geometry = preparedLevel.geometry;
     // The field gives the exemplar's up direction b; the neighborhoods' x axis is t = b x n, so
     // that b = n x t as surface_neighborhoods.h lays cells out (exemplar rows across the field).
     preparedLevel.tangents = orientation.field
-                                 ? tangentFieldFromRotations(level.mesh, *orientation.field, orientation.smooth)
-                                 : smoothTangentField(level.mesh, orientation.smooth);
+                                 ? tangentFieldFromRotations(geometry, *orientation.field, orientation.smooth)
+                                 : smoothTangentField(geometry, orientation.smooth);
     for (std::size_t v = 0; v < preparedLevel.tangents.size(); ++v)
-      preparedLevel.tangents[v] = preparedLevel.tangents[v].cross(level.mesh.normals[v]).normalized();
+      preparedLevel.tangents[v] = preparedLevel.tangents[v].cross(geometry.normals[v]).normalized();
     for (int n : neighborhoodSizes) {
-      const std::vector<std::int32_t> centres = selectActiveCentres(level.mesh, level.spacing, detail::activeStride(n));
+      const std::vector<std::int32_t> centres = selectActiveCentres(geometry, level.spacing, detail::activeStride(n));
       preparedLevel.neighborhoods.push_back(
-          resampleNeighborhoods(level.mesh, preparedLevel.topology, preparedLevel.tangents, level.spacing, n, centres));
+          resampleNeighborhoods(geometry, preparedLevel.topology, preparedLevel.tangents, level.spacing, n, centres));
     }
     preparedLevel.stencil =
-        buildSurfaceStencil(level.mesh, preparedLevel.topology, preparedLevel.tangents, level.spacing, kStencilSize);
+        buildSurfaceStencil(geometry, preparedLevel.topology, preparedLevel.tangents, level.spacing, kStencilSize);
     prepared.levels.push_back(std::move(preparedLevel));
     progress.advance(1);
   }

@@ -125,9 +125,9 @@ SurfaceSynthesisResult synthesizeSurface(std::span<const ExemplarAnalysis> analy
     if (level == 0) {
       coordinates = patchSurfaceCoordinates(prepared.neighborhoods[0], options.seed, level, h, base.width, base.height);
     } else {
-      const MeshLevel& coarse = surface.hierarchy.levels[std::size_t(level - 1)];
-      coordinates = upsampleSurfaceCoordinates(coarse, surface.levels[std::size_t(level - 1)].tangents, mesh,
-                                               coordinates, float(h) / mesh.spacing, base.width, base.height);
+      const PreparedSurfaceLevel& coarse = surface.levels[std::size_t(level - 1)];
+      coordinates = upsampleSurfaceCoordinates(coarse.geometry, coarse.tangents, mesh, prepared.geometry, coordinates,
+                                               float(h) / mesh.spacing, base.width, base.height);
       jitterSurfaceCoordinates(coordinates, level, h, parallel.jitter, options.seed, base.width, base.height);
     }
     SurfaceParallelOptions levelOptions = parallel;

@@ -1,5 +1,6 @@
 // The rule that keeps a level's refinement (keepsTheTexture): not flatter than a faithful texture
-// allows, the distinctive colors kept, the histogram at most 1.5x as far or under the floor.
+// allows, the distinctive colors kept (keepsTheFeatures), the histogram at most 1.5x as far or
+// under the floor.
 #include "texsynth/surface/surface_level_measures.h"
 
 #include <gtest/gtest.h>
@@ -31,6 +32,15 @@ TEST(KeepsTheTexture, RefusesAFlatterLevel) {
 TEST(KeepsTheTexture, RefusesLostDistinctiveColors) {
   EXPECT_TRUE(keepsTheTexture(kStart, measures(-0.06, 0.010, 0.181)));
   EXPECT_FALSE(keepsTheTexture(kStart, measures(-0.06, 0.010, 0.179)));  // under 0.9 of 0.2
+  // Also from a state that shows more of them than the exemplar's fifth.
+  EXPECT_FALSE(keepsTheTexture(measures(-0.06, 0.010, 0.24), measures(-0.06, 0.010, 0.20)));
+}
+
+TEST(KeepsTheFeatures, JudgesFlatnessAndDistinctiveColorsButNotTheHistogram) {
+  // Flow animation's repaired frames are held to the rule's first two conditions.
+  EXPECT_TRUE(keepsTheFeatures(kStart, measures(-0.06, 1.0, 0.181)));
+  EXPECT_FALSE(keepsTheFeatures(kStart, measures(0.03, 0.010, 0.20)));
+  EXPECT_FALSE(keepsTheFeatures(kStart, measures(-0.06, 0.010, 0.179)));
 }
 
 TEST(KeepsTheTexture, RefusesAFarHistogramButNotNoiseUnderTheFloor) {

@@ -80,12 +80,15 @@ std::vector<Vec2f> patchSurfaceCoordinates(const SurfaceNeighborhoods& neighborh
                                            int spacing, int exemplarWidth, int exemplarHeight);
 
 // The finer level's coordinates: each vertex continues the coordinate of the corner u of its
-// parent triangle with the largest barycentric weight, moved by its offset from u in u's
-// tangent frame (t = coarseTangents[u], b = n x t), `pixelsPerUnit` exemplar pixels per world
-// unit (h_fine / fine spacing).
-std::vector<Vec2f> upsampleSurfaceCoordinates(const MeshLevel& coarse, std::span<const Vec3f> coarseTangents,
-                                              const MeshLevel& fine, std::span<const Vec2f> coarseCoordinates,
-                                              float pixelsPerUnit, int exemplarWidth, int exemplarHeight);
+// parent triangle (fine.parentTriangle, fine.parentBarycentric) with the largest barycentric
+// weight, moved by its offset from u in u's tangent frame (t = coarseTangents[u], b = n x t),
+// `pixelsPerUnit` exemplar pixels per world unit (h_fine / fine spacing). Positions and normals
+// are those of the geometry the levels' neighbourhoods were laid out on (the same vertices and
+// triangles as coarse.mesh and fine.mesh).
+std::vector<Vec2f> upsampleSurfaceCoordinates(const Mesh& coarseGeometry, std::span<const Vec3f> coarseTangents,
+                                              const MeshLevel& fine, const Mesh& fineGeometry,
+                                              std::span<const Vec2f> coarseCoordinates, float pixelsPerUnit,
+                                              int exemplarWidth, int exemplarHeight);
 
 // Adds round(h r xi(seed, vertex, level)), xi uniform in [-1, 1]^2, wrapping.
 void jitterSurfaceCoordinates(std::vector<Vec2f>& coordinates, int level, int spacing, float strength,

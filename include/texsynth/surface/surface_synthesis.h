@@ -3,7 +3,8 @@
 // surface texture synthesis via discrete optimization", §2): the texture is grown as vertex
 // colors directly on a retiled mesh, so there are no UV seams and no stretching.
 //
-// - The mesh side (prepareSurface): the retiled hierarchy (geometry/mesh_hierarchy.h), a tangent
+// - The mesh side (prepareSurface): the retiled hierarchy (geometry/mesh_hierarchy.h), each level
+//   smoothed below its pixel scale for the synthesis to read (kSurfaceGeometrySmoothing), a tangent
 //   direction per vertex (surface/tangent_field.h: a smooth field, or the tangent projection of a
 //   sketch-designed rotation field), and per level and neighborhood size the resampling W_p of
 //   the active vertices' neighborhoods (surface/surface_neighborhoods.h). Computed once; flow
@@ -42,6 +43,17 @@
 
 namespace texsynth {
 
+// One vertex spacing is one exemplar pixel, so relief below that scale (the bumps of a scanned
+// model) is detail the texture cannot follow: unfolded over it, every neighbourhood is stretched
+// and no exemplar patch fits. Taubin passes along the normals (mesh_smoothing.h) remove it from
+// the geometry the synthesis reads, not from the output. Measured per vertex on GIMP leaves on
+// the CGAL armadillo (bumpy at that scale) the coherence error was the same at every curvature,
+// 1.70x 2D's; with 10 passes 1.38x. 6 CGAL meshes x 8 GIMP exemplars (bench/surface_synthesis.sh):
+// all three targets on 42 / 43 / 41 pairs at seeds 3 / 1 / 2 (40 / 39 / 39 without), geometric
+// mean coherence 1.219 / 1.224 / 1.229 -> 1.207 / 1.215 / 1.214x 2D's. Pulling the field less
+// towards its guide as well (alignment 300) moved pairs both ways (seed 3: 40).
+inline constexpr int kSurfaceGeometrySmoothing = 10;
+
 // How the texture is oriented on the surface: a tangent direction field gives the exemplar's up
 // direction (its -y) at every vertex: the tangent projection of `field` when given (the rotation
 // field `texsynth field` designs from a sketch, its local x axis), else a smooth field following
@@ -50,11 +62,18 @@ namespace texsynth {
 struct SurfaceOrientation {
   const RotationField* field = nullptr;
   TangentFieldOptions smooth;
+  // Taubin passes (mesh_smoothing.h) over each level's mesh before its neighbourhoods are laid
+  // out (PreparedSurfaceLevel::geometry); 0 lays them out on the retiled mesh itself.
+  int geometrySmoothing = kSurfaceGeometrySmoothing;
 };
 
 struct PreparedSurfaceLevel {
   MeshTopology topology;
-  std::vector<Vec3f> tangents;  // unit, per vertex: the exemplar's +x direction (up x normal)
+  // The level's mesh smoothed (SurfaceOrientation::geometrySmoothing): the same vertices and
+  // triangles, which the tangents, neighborhoods, stencil and upsampling read; the output keeps
+  // the retiled mesh's own positions (PreparedSurface::hierarchy).
+  Mesh geometry;
+  std::vector<Vec3f> tangents;  // unit, per vertex: the exemplar's +x direction (up x normal of geometry)
   // One per neighborhood size, in the order of the sizes prepareSurface was given; active
   // centres activeStride(N) cells apart.
   std::vector<SurfaceNeighborhoods> neighborhoods;
