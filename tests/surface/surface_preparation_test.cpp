@@ -12,7 +12,7 @@ using namespace texsynth;
 
 namespace {
 
-constexpr int kCells = 48;
+constexpr int kCells = 32;
 
 // The unit square as a grid whose vertices are raised and lowered in a checkerboard by a
 // quarter of an edge: at one pixel per vertex spacing, relief far below the texture's detail.
