@@ -152,12 +152,12 @@ void runSurface(const CLI::App& parser, const SurfaceArgs& args, const GlobalOpt
   for (const SurfaceRefinement& r : synthesis.levels)
     report["refinement"].push_back({{"level", r.level},
                                     {"step", r.step == SurfaceRefinementStep::Polish ? "polish" : "optimization"},
-                                    {"start_flatness", r.startFlatness},
-                                    {"start_histogram", r.startHistogram},
-                                    {"start_distinctive", r.startDistinctive},
-                                    {"refined_distinctive", r.refinedDistinctive},
-                                    {"refined_flatness", r.refinedFlatness},
-                                    {"refined_histogram", r.refinedHistogram},
+                                    {"start_flatness", r.start.flatness},
+                                    {"start_histogram", r.start.histogram},
+                                    {"start_distinctive", r.start.distinctive},
+                                    {"refined_distinctive", r.refined.distinctive},
+                                    {"refined_flatness", r.refined.flatness},
+                                    {"refined_histogram", r.refined.histogram},
                                     {"kept", r.kept}});
   const std::string summary =
       "synthesized " + std::to_string(result.colored.vertexCount()) + " vertices in " + seconds(secondsSince(start)) +

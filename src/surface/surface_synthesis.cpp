@@ -65,15 +65,7 @@ SurfaceRefinement keepUnlessHarmful(SurfaceRefinementStep step, const SurfaceSte
     state.swap(candidate);
     stateMeasures = after;
   }
-  return {level,
-          step,
-          before.flatness,
-          before.histogram,
-          before.distinctive,
-          after.flatness,
-          after.histogram,
-          after.distinctive,
-          kept};
+  return {level, step, before, after, kept};
 }
 
 }  // namespace

@@ -142,8 +142,8 @@ TEST(SurfaceSynthesis, ThePolishRunsLastAtTheFinestLevelAndBringsItCloserToCoher
   EXPECT_EQ(polish.level, smallOptions().levels - 1);
   for (const SurfaceRefinement& r : unpolished.levels) EXPECT_EQ(r.step, SurfaceRefinementStep::Optimization);
   ASSERT_EQ(unpolished.levels.size() + 1, polished.levels.size());
-  ASSERT_TRUE(polish.kept) << "flatness " << polish.startFlatness << " -> " << polish.refinedFlatness << ", histogram "
-                           << polish.startHistogram << " -> " << polish.refinedHistogram;
+  ASSERT_TRUE(polish.kept) << "flatness " << polish.start.flatness << " -> " << polish.refined.flatness
+                           << ", histogram " << polish.start.histogram << " -> " << polish.refined.histogram;
   // Each vertex takes its best match among its neighbours' proposals: the mean distance to a
   // coherent copy of the exemplar falls.
   const double before = meanFinestStencilDistance(f, unpolished.coordinates);

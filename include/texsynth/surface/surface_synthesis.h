@@ -36,6 +36,7 @@
 #include "texsynth/geometry/mesh_hierarchy.h"
 #include "texsynth/geometry/mesh_topology.h"
 #include "texsynth/image/texture_optimization.h"
+#include "texsynth/surface/surface_level_measures.h"
 #include "texsynth/surface/surface_neighborhoods.h"
 #include "texsynth/surface/surface_parallel.h"
 #include "texsynth/surface/surface_stencil.h"
@@ -145,13 +146,12 @@ std::vector<AnalysisOptions> surfaceAnalysisOptions(const Image& exemplar, const
 // (SurfaceStartOptions::finestPolishPasses).
 enum class SurfaceRefinementStep { Optimization, Polish };
 
-// Whether a refinement of one level was kept: the measures (surface_level_measures.h) of the
-// state before it and of its result.
+// Whether a refinement of one level was kept (keepsTheTexture): the measures of the state before
+// it and of its result.
 struct SurfaceRefinement {
   int level = 0;
   SurfaceRefinementStep step = SurfaceRefinementStep::Optimization;
-  double startFlatness = 0, startHistogram = 0, startDistinctive = 0;
-  double refinedFlatness = 0, refinedHistogram = 0, refinedDistinctive = 0;
+  SurfaceLevelMeasures start, refined;
   bool kept = false;
 };
 
