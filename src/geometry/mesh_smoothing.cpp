@@ -4,12 +4,14 @@
 #include "texsynth/geometry/mesh_smoothing.h"
 
 #include <algorithm>
+#include <numeric>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "texsynth/core/error.h"
 #include "texsynth/core/parallel.h"
+#include "texsynth/geometry/cotangent_weights.h"
 
 namespace texsynth {
 
@@ -18,76 +20,45 @@ namespace {
 constexpr float kLambda = 0.5f, kMu = -0.53f;  // Taubin's pass band: mu < -lambda < 0
 // Cotangent weights are clamped to this share of a vertex's largest, so that an obtuse
 // triangle's negative weight cannot push a vertex away from its neighbours.
-constexpr float kWeightFloor = 0.05f;
+constexpr double kWeightFloor = 0.05;
 
-float cotangent(const Vec3f& a, const Vec3f& b) {
-  const float sine = a.cross(b).norm();
-  return sine > 0 ? a.dot(b) / sine : 0.0f;
-}
+// Cotangents are clamped to this magnitude (a near-degenerate triangle), as the tangent field's.
+constexpr double kMaxCotangent = 1e3;
 
 // Per vertex its distinct edge neighbours (CSR, in ascending order) with their
 // normalized cotangent weights: the weighted mean of the neighbours lies in the tangent plane on
-// a flat region and along the normal on a sphere, however irregular the triangles. Built per
-// vertex from its own triangles, in parallel.
+// a flat region and along the normal on a sphere, however irregular the triangles.
 struct CotangentNeighbours {
   std::vector<std::int32_t> offsets, vertices;
   std::vector<float> weights;
 
-  CotangentNeighbours(const Mesh& mesh, const MeshTopology& topology) {
-    const std::int64_t n = topology.vertexCount();
-    // Vertex v's neighbours and weights, appended to the given lists (which it clears).
-    auto collect = [&](std::int64_t v, std::vector<std::int32_t>& around, std::vector<float>& w) {
-      thread_local std::vector<std::pair<std::int32_t, float>> order;
-      around.clear();
-      w.clear();
-      for (int t : topology.trianglesAround(int(v))) {
-        const Vec3i& tri = topology.triangles()[std::size_t(t)];
-        const int corner = topology.cornerOf(t, int(v));
-        const Vec3f& p = mesh.positions[std::size_t(v)];
-        for (int k = 1; k <= 2; ++k) {
-          // The edge from v to corner + k; its weight is half the cotangent at the third corner.
-          const std::int32_t b = tri[(corner + k) % 3], c = tri[(corner + 3 - k) % 3];
-          const Vec3f& pc = mesh.positions[std::size_t(c)];
-          const float weight = 0.5f * cotangent(p - pc, mesh.positions[std::size_t(b)] - pc);
-          const auto found = std::find(around.begin(), around.end(), b);
-          if (found == around.end()) {
-            around.push_back(b);
-            w.push_back(weight);
-          } else {
-            w[std::size_t(found - around.begin())] += weight;
-          }
-        }
-      }
-      if (around.empty()) return;
-      // In ascending vertex order, so that the sums below do not depend on the triangles' order.
-      order.resize(around.size());
-      for (std::size_t i = 0; i < order.size(); ++i) order[i] = {around[i], w[i]};
-      std::sort(order.begin(), order.end());
-      for (std::size_t i = 0; i < order.size(); ++i) around[i] = order[i].first, w[i] = order[i].second;
-      const float largest = *std::max_element(w.begin(), w.end());
-      float sum = 0;
-      for (float& x : w) sum += x = std::max(x, kWeightFloor * largest);
-      for (float& x : w) x = sum > 0 ? x / sum : 1.0f / float(w.size());
-    };
-    offsets.assign(std::size_t(n) + 1, 0);
-    parallelForChunks(0, n, 4096, [&](std::int64_t begin, std::int64_t end) {
-      std::vector<std::int32_t> around;
-      std::vector<float> w;
+  explicit CotangentNeighbours(const Mesh& mesh) {
+    const std::size_t n = mesh.vertexCount();
+    const std::vector<CotangentEdge> edges = cotangentEdges(mesh, kMaxCotangent);
+    offsets.assign(n + 1, 0);
+    for (const CotangentEdge& e : edges) ++offsets[std::size_t(e.a) + 1], ++offsets[std::size_t(e.b) + 1];
+    std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
+    // Edges come in ascending (a, b) order: each vertex receives its smaller neighbours first,
+    // then its larger ones, both ascending.
+    std::vector<double> raw(std::size_t(offsets.back()));
+    vertices.resize(raw.size());
+    std::vector<std::int32_t> fill(offsets.begin(), offsets.end() - 1);
+    for (const CotangentEdge& e : edges) {
+      const auto i = std::size_t(fill[std::size_t(e.a)]++), j = std::size_t(fill[std::size_t(e.b)]++);
+      vertices[i] = e.b, raw[i] = e.weight;
+      vertices[j] = e.a, raw[j] = e.weight;
+    }
+    weights.resize(raw.size());
+    parallelForChunks(0, std::int64_t(n), 4096, [&](std::int64_t begin, std::int64_t end) {
       for (std::int64_t v = begin; v < end; ++v) {
-        collect(v, around, w);
-        offsets[std::size_t(v) + 1] = std::int32_t(around.size());
-      }
-    });
-    for (std::size_t v = 0; v < std::size_t(n); ++v) offsets[v + 1] += offsets[v];
-    vertices.resize(std::size_t(offsets.back()));
-    weights.resize(vertices.size());
-    parallelForChunks(0, n, 4096, [&](std::int64_t begin, std::int64_t end) {
-      std::vector<std::int32_t> around;
-      std::vector<float> w;
-      for (std::int64_t v = begin; v < end; ++v) {
-        collect(v, around, w);
-        std::copy(around.begin(), around.end(), vertices.begin() + offsets[std::size_t(v)]);
-        std::copy(w.begin(), w.end(), weights.begin() + offsets[std::size_t(v)]);
+        const auto first = std::size_t(offsets[std::size_t(v)]), last = std::size_t(offsets[std::size_t(v) + 1]);
+        if (first == last) continue;
+        const double largest =
+            *std::max_element(raw.begin() + std::ptrdiff_t(first), raw.begin() + std::ptrdiff_t(last));
+        double sum = 0;
+        for (std::size_t i = first; i < last; ++i) sum += raw[i] = std::max(raw[i], kWeightFloor * largest);
+        for (std::size_t i = first; i < last; ++i)
+          weights[i] = float(sum > 0 ? raw[i] / sum : 1.0 / double(last - first));
       }
     });
   }
@@ -101,7 +72,7 @@ Mesh taubinSmoothed(const Mesh& mesh, const MeshTopology& topology, int iteratio
   if (iterations == 0) return smoothed;
   if (smoothed.normals.size() != smoothed.vertexCount()) smoothed.computeNormals();
   const std::vector<Vec3f> normals = smoothed.normals;
-  const CotangentNeighbours neighbours(mesh, topology);
+  const CotangentNeighbours neighbours(mesh);
   std::vector<Vec3f> next(mesh.positions.size());
   auto step = [&](float factor) {
     const std::vector<Vec3f>& current = smoothed.positions;

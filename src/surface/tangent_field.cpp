@@ -15,6 +15,7 @@
 
 #include "texsynth/core/error.h"
 #include "texsynth/core/parallel.h"
+#include "texsynth/geometry/cotangent_weights.h"
 
 namespace texsynth {
 
@@ -117,43 +118,17 @@ struct Edge {
 // Unique edges sorted by (a, b) with cotan weights summed over their triangles (clamped), and the
 // lumped (barycentric) vertex areas.
 std::vector<Edge> buildEdges(const Mesh& mesh, const TangentPlanes& planes, std::vector<double>& area) {
-  const std::size_t n = mesh.vertexCount();
-  area.assign(n, 0.0);
-  // Half-edges bucketed by their smaller vertex (a counting sort), then sorted per bucket.
-  std::vector<std::int64_t> start(n + 1, 0);
-  for (const Vec3i& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k) ++start[std::size_t(std::min(t[k], t[(k + 1) % 3])) + 1];
-  std::partial_sum(start.begin(), start.end(), start.begin());
-  std::vector<std::pair<int, double>> halfEdges(static_cast<std::size_t>(start[n]));
-  std::vector<std::int64_t> fill(start.begin(), start.end() - 1);
+  area.assign(mesh.vertexCount(), 0.0);
   for (const Vec3i& t : mesh.triangles) {
-    const Vec3d p[3] = {mesh.positions[std::size_t(t[0])].cast<double>(),
-                        mesh.positions[std::size_t(t[1])].cast<double>(),
-                        mesh.positions[std::size_t(t[2])].cast<double>()};
-    const double doubleArea = (p[1] - p[0]).cross(p[2] - p[0]).norm();
-    for (int k = 0; k < 3; ++k) {
-      area[std::size_t(t[k])] += doubleArea / 6;
-      // Edge (k, k+1); the corner opposite it is k+2.
-      const Vec3d u = p[k] - p[(k + 2) % 3], w = p[(k + 1) % 3] - p[(k + 2) % 3];
-      const double sine = u.cross(w).norm(), cosine = u.dot(w);
-      const double cot = sine > 0 ? std::clamp(cosine / sine, -kMaxCotangent, kMaxCotangent)
-                                  : (cosine >= 0 ? kMaxCotangent : -kMaxCotangent);
-      const int a = std::min(t[k], t[(k + 1) % 3]), b = std::max(t[k], t[(k + 1) % 3]);
-      if (a != b) halfEdges[std::size_t(fill[std::size_t(a)]++)] = {b, 0.5 * cot};
-    }
+    const Vec3d p0 = mesh.positions[std::size_t(t[0])].cast<double>();
+    const double doubleArea = (mesh.positions[std::size_t(t[1])].cast<double>() - p0)
+                                  .cross(mesh.positions[std::size_t(t[2])].cast<double>() - p0)
+                                  .norm();
+    for (int k = 0; k < 3; ++k) area[std::size_t(t[k])] += doubleArea / 6;
   }
   std::vector<Edge> edges;
-  edges.reserve(halfEdges.size() / 2 + 1);
-  for (std::size_t a = 0; a < n; ++a) {
-    auto first = halfEdges.begin() + start[a], last = halfEdges.begin() + fill[a];
-    std::sort(first, last, [](const auto& x, const auto& y) { return x.first < y.first; });
-    for (auto it = first; it != last;) {
-      const int b = it->first;
-      double weight = 0;
-      for (; it != last && it->first == b; ++it) weight += it->second;
-      edges.push_back({int(a), b, std::max(weight, kMinWeight), {}});
-    }
-  }
+  for (const CotangentEdge& e : cotangentEdges(mesh, kMaxCotangent))
+    edges.push_back({e.a, e.b, std::max(e.weight, kMinWeight), {}});
   parallelFor(
       0, std::int64_t(edges.size()),
       [&](std::int64_t i) {
