@@ -155,7 +155,9 @@ void runSurface(const CLI::App& parser, const SurfaceArgs& args, const GlobalOpt
                                     {"start_flatness", r.start.flatness},
                                     {"start_histogram", r.start.histogram},
                                     {"start_distinctive", r.start.distinctive},
+                                    {"start_coherence", r.start.coherence},
                                     {"refined_distinctive", r.refined.distinctive},
+                                    {"refined_coherence", r.refined.coherence},
                                     {"refined_flatness", r.refined.flatness},
                                     {"refined_histogram", r.refined.histogram},
                                     {"kept", r.kept}});

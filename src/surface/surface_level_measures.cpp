@@ -1,5 +1,5 @@
-// Flatness, histogram distance and distinctive share of one level's coordinates, and the rule
-// that keeps a refinement by them (surface_level_measures.h).
+// Flatness, histogram distance, distinctive share and coherence distance of one level's
+// coordinates, and the rule that keeps a refinement by them (surface_level_measures.h).
 #include "texsynth/surface/surface_level_measures.h"
 
 #include <algorithm>
@@ -17,16 +17,25 @@ namespace texsynth {
 namespace {
 constexpr double kFlatnessTolerance = 0.025, kHistogramTolerance = 1.5, kHistogramFloor = 0.003,
                  kDistinctiveShare = 0.9;
+// A refinement that joins the start (keepsTheTexture): coherence distance at most this share of
+// the state's, and its allowances.
+constexpr double kJoiningCoherence = 0.5, kJoiningHistogramTolerance = 3.0, kJoiningDistinctiveShare = 0.8;
+
+bool keepsFeatures(const SurfaceLevelMeasures& before, const SurfaceLevelMeasures& after, double distinctiveShare) {
+  return after.flatness <= std::max(before.flatness, 0.0) + kFlatnessTolerance &&
+         after.distinctive >= distinctiveShare * before.distinctive;
+}
 }  // namespace
 
 bool keepsTheFeatures(const SurfaceLevelMeasures& before, const SurfaceLevelMeasures& after) {
-  return after.flatness <= std::max(before.flatness, 0.0) + kFlatnessTolerance &&
-         after.distinctive >= kDistinctiveShare * before.distinctive;
+  return keepsFeatures(before, after, kDistinctiveShare);
 }
 
 bool keepsTheTexture(const SurfaceLevelMeasures& before, const SurfaceLevelMeasures& after) {
-  return keepsTheFeatures(before, after) &&
-         after.histogram <= std::max(kHistogramTolerance * before.histogram, kHistogramFloor);
+  const bool joins = before.coherence > 0 && after.coherence <= kJoiningCoherence * before.coherence;
+  return keepsFeatures(before, after, joins ? kJoiningDistinctiveShare : kDistinctiveShare) &&
+         after.histogram <=
+             std::max((joins ? kJoiningHistogramTolerance : kHistogramTolerance) * before.histogram, kHistogramFloor);
 }
 
 SurfaceLevelMeasures measureSurfaceLevel(const SurfaceStencil& stencil, const ExemplarLevel& level,
@@ -61,6 +70,9 @@ SurfaceLevelMeasures measureSurfaceLevel(const SurfaceStencil& stencil, const Ex
   std::size_t distinctive = 0;
   for (std::size_t v = 0; v < coordinates.size(); ++v) distinctive += isDistinctive(colors.data() + v * channels);
   measures.distinctive = coordinates.empty() ? 0.0 : double(distinctive) / double(coordinates.size());
+  double coherence = 0;  // summed in vertex order: the same for any thread count
+  for (float d : stencilDistances(stencil, level, coordinates)) coherence += d;
+  measures.coherence = coordinates.empty() ? 0.0 : coherence / double(coordinates.size());
 
   // Wasserstein-1 per channel between the vertices' values and the level's pixels.
   if (coordinates.empty()) return measures;

@@ -220,7 +220,11 @@ double correctSurfaceCoordinates(const SurfaceStencil& stencil, const ExemplarAn
 
 std::vector<float> stencilDistances(const SurfaceStencil& stencil, const ExemplarAnalysis& analysis, int level,
                                     std::span<const Vec2f> coordinates) {
-  const ExemplarLevel& exemplar = analysis.levels[std::size_t(level)];
+  return stencilDistances(stencil, analysis.levels[std::size_t(level)], coordinates);
+}
+
+std::vector<float> stencilDistances(const SurfaceStencil& stencil, const ExemplarLevel& exemplar,
+                                    std::span<const Vec2f> coordinates) {
   const int channels = exemplar.image.channels;
   const float h = float(exemplar.spacing);
   const NearestLookup lookup{exemplar.image, channels};

@@ -1,6 +1,6 @@
 // The rule that keeps a level's refinement (keepsTheTexture): not flatter than a faithful texture
 // allows, the distinctive colors kept (keepsTheFeatures), the histogram at most 1.5x as far or
-// under the floor.
+// under the floor; more allowance for a refinement that joins an incoherent start.
 #include "texsynth/surface/surface_level_measures.h"
 
 #include <gtest/gtest.h>
@@ -9,9 +9,9 @@ using namespace texsynth;
 
 namespace {
 
-SurfaceLevelMeasures measures(double flatness, double histogram, double distinctive) {
+SurfaceLevelMeasures measures(double flatness, double histogram, double distinctive, double coherence = 0.05) {
   SurfaceLevelMeasures m;
-  m.flatness = flatness, m.histogram = histogram, m.distinctive = distinctive;
+  m.flatness = flatness, m.histogram = histogram, m.distinctive = distinctive, m.coherence = coherence;
   return m;
 }
 
@@ -51,6 +51,21 @@ TEST(KeepsTheTexture, RefusesAFarHistogramButNotNoiseUnderTheFloor) {
   EXPECT_TRUE(keepsTheTexture(nearPerfect, measures(-0.06, 0.0029, 0.20)));
   // ... but not past it.
   EXPECT_FALSE(keepsTheTexture(nearPerfect, measures(-0.06, 0.0031, 0.20)));
+}
+
+TEST(KeepsTheTexture, AllowsMoreToARefinementThatJoinsAnIncoherentStart) {
+  // Coherence distance halved: histogram up to 3x, distinctive share down to 0.8x (a sphere in
+  // smooth waves: 2.1x and 0.84x).
+  const SurfaceLevelMeasures joined = measures(-0.06, 0.029, 0.161, 0.025);
+  EXPECT_TRUE(keepsTheTexture(kStart, joined));
+  EXPECT_FALSE(keepsTheTexture(kStart, measures(-0.06, 0.031, 0.161, 0.025)));
+  EXPECT_FALSE(keepsTheTexture(kStart, measures(-0.06, 0.029, 0.159, 0.025)));
+  // Never flatter.
+  EXPECT_FALSE(keepsTheTexture(kStart, measures(0.03, 0.010, 0.20, 0.025)));
+  // Not halved: the usual limits.
+  EXPECT_FALSE(keepsTheTexture(kStart, measures(-0.06, 0.029, 0.161, 0.026)));
+  // Flow animation's rule has no such allowance.
+  EXPECT_FALSE(keepsTheFeatures(kStart, joined));
 }
 
 }  // namespace

@@ -109,6 +109,9 @@ double correctSurfaceCoordinates(const SurfaceStencil& stencil, const ExemplarAn
 // looked up at its coordinate plus h times the members' offsets. 0 inside a coherent copy.
 std::vector<float> stencilDistances(const SurfaceStencil& stencil, const ExemplarAnalysis& analysis, int level,
                                     std::span<const Vec2f> coordinates);
+// The same against one stack level.
+std::vector<float> stencilDistances(const SurfaceStencil& stencil, const ExemplarLevel& level,
+                                    std::span<const Vec2f> coordinates);
 
 // The level's image at every coordinate (the nearest pixel, wrapped): `channels` floats per vertex
 // (0 = all of the image's).
