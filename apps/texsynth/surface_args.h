@@ -14,7 +14,7 @@ namespace texsynth::cli {
 struct SurfaceArgs {
   std::string exemplar, mesh, field, sketch, up, render, stats, coords, applyCoords, bake;
   std::vector<std::string> outputs;
-  int vertices = 48000, levels = 3, iterations = 2, renderSize = 768, views = 2, bakeSize = 2048;
+  int vertices = 48000, levels = 3, iterations = kSurfaceIterations, renderSize = 768, views = 2, bakeSize = 2048;
   float featureWeight = kSurfaceFeatureWeight;
 };
 

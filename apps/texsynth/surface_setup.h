@@ -16,7 +16,7 @@ namespace texsynth::cli {
 
 struct SurfaceSetupArgs {
   std::string exemplar, mesh, field, sketch, up;
-  int vertices = 48000, levels = 3, iterations = 2;
+  int vertices = 48000, levels = 3, iterations = kSurfaceIterations;
   bool levelsGiven = false;                     // --levels on the command line (else capped by the exemplar's size)
   bool bakes = false;                           // --bake: the mesh must have UVs (checked right after reading it)
   bool verticesGiven = false;                   // --vertices on the command line
