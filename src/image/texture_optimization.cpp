@@ -8,6 +8,7 @@
 #include "optimization_steps.h"
 #include "texsynth/core/parallel.h"
 #include "texsynth/core/random.h"
+#include "texsynth/exemplar/distinctive_colors.h"
 #include "texsynth/image/flat_patch_share.h"
 #include "texsynth/image/seam_blend.h"
 
@@ -260,9 +261,24 @@ std::vector<AnalysisOptions> optimizationAnalysisOptions(const TextureOptimizati
   return all;
 }
 
+std::vector<AnalysisOptions> withFeatureChannel(std::vector<AnalysisOptions> analyses, const Image& exemplar,
+                                                float weight) {
+  if (!(weight >= 0) || !std::isfinite(weight))
+    throw ParameterError("feature weight", std::to_string(weight) + " is not a finite weight >= 0");
+  if (weight == 0) return analyses;
+  const Image mask = distinctiveFeatureMask(exemplar, kDistinctivePercent);
+  if (mask.empty()) return analyses;
+  for (AnalysisOptions& analysis : analyses) {
+    analysis.featureMask = mask;
+    analysis.featureWeight = weight;
+  }
+  return analyses;
+}
+
 TextureOptimizationResult optimizeTexture(std::span<const ExemplarAnalysis> analyses,
                                           const TextureOptimizationOptions& options, int width, int height,
-                                          Progress& progress, const SourceCoordinates* startCoords) {
+                                          Progress& progress, const SourceCoordinates* startCoords,
+                                          const FeatureAnalyses& featureAnalyses) {
   validate(options);
   if (width <= 0) throw ParameterError("width", "must be > 0, got " + std::to_string(width));
   if (height <= 0) throw ParameterError("height", "must be > 0, got " + std::to_string(height));
@@ -282,6 +298,12 @@ TextureOptimizationResult optimizeTexture(std::span<const ExemplarAnalysis> anal
 
   TextureOptimizationResult result;
   LevelState state;
+  // The analyses the E+M steps read: `analyses`, or from the first level colors alone let
+  // collapse on, the feature channel's. Sources index the same exemplar pixels in both, and the
+  // guard, the upsampling and the output read colors only (`base`).
+  std::vector<ExemplarAnalysis> featured;
+  std::span<const ExemplarAnalysis> solving = analyses;
+  bool askedForFeatures = false;
   for (int level = first; level < levels; ++level) {
     const int w = widths[level], h = heights[level];
     const int steps = int(options.neighborhoodSizes.size()) * (iterationsAt(options, level, levels) + 1);
@@ -315,10 +337,28 @@ TextureOptimizationResult optimizeTexture(std::span<const ExemplarAnalysis> anal
       const detail::FlatPatchShare flatness(base.levels[std::size_t(level)], base.colorChannels);
       const SourceCoordinates before = state.coords;
       const double flatBefore = flatness.of(before.pixelIndices(base.width), w, h);
-      for (std::size_t scale = 0; scale < options.neighborhoodSizes.size(); ++scale)
-        optimizeScale(analyses, options, level, scale, state, result.history, progress);
-      const double flatAfter = flatness.of(state.coords.pixelIndices(base.width), w, h);
-      if (flatAfter > flatBefore + options.collapseTolerance) {
+      auto collapses = [&] {
+        for (std::size_t scale = 0; scale < options.neighborhoodSizes.size(); ++scale)
+          optimizeScale(solving, options, level, scale, state, result.history, progress);
+        return flatness.of(state.coords.pixelIndices(base.width), w, h) > flatBefore + options.collapseTolerance;
+      };
+      bool collapsed = collapses();
+      if (collapsed && !askedForFeatures && featureAnalyses) {
+        askedForFeatures = true;
+        progress.end();  // the analysis reports its own stages
+        featured = featureAnalyses();
+        progress.begin("optimize level " + std::to_string(level + 1) + "/" + std::to_string(levels) +
+                           " again, with the feature channel",
+                       featured.empty() ? 0 : steps);
+        if (!featured.empty()) {
+          validateAnalyses(featured, options);
+          solving = featured;
+          state.coords = before;
+          collapsed = collapses();
+        }
+      }
+      if (!featured.empty()) ++result.featureLevels;
+      if (collapsed) {
         state.coords = before;
         ++result.undoneLevels;
       }

@@ -13,7 +13,6 @@
 #include "texsynth/core/parallel.h"
 #include "texsynth/core/random.h"
 #include "texsynth/core/timing.h"
-#include "texsynth/exemplar/distinctive_colors.h"
 #include "texsynth/image/discrete_steps.h"
 #include "texsynth/surface/surface_level_measures.h"
 #include "texsynth/surface/surface_optimization.h"
@@ -72,17 +71,7 @@ SurfaceRefinement keepUnlessHarmful(SurfaceRefinementStep step, const SurfaceSte
 
 std::vector<AnalysisOptions> surfaceAnalysisOptions(const Image& exemplar, const TextureOptimizationOptions& options,
                                                     float featureWeight) {
-  std::vector<AnalysisOptions> analyses = optimizationAnalysisOptions(options);
-  if (!(featureWeight >= 0) || !std::isfinite(featureWeight))
-    throw ParameterError("feature weight", std::to_string(featureWeight) + " is not a finite weight >= 0");
-  if (featureWeight == 0) return analyses;
-  const Image mask = distinctiveFeatureMask(exemplar, kDistinctivePercent);
-  if (mask.empty()) return analyses;
-  for (AnalysisOptions& analysis : analyses) {
-    analysis.featureMask = mask;
-    analysis.featureWeight = featureWeight;
-  }
-  return analyses;
+  return withFeatureChannel(optimizationAnalysisOptions(options), exemplar, featureWeight);
 }
 
 SurfaceSynthesisResult synthesizeSurface(std::span<const ExemplarAnalysis> analyses, const PreparedSurface& surface,

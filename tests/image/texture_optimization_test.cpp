@@ -267,6 +267,74 @@ TEST(TextureOptimization, CollapseGuardKeepsAFlatBackgroundsFeatures) {
               flatShare(withGuard.coords), withGuard.undoneLevels, flatShare(without.coords));
 }
 
+// The same exemplar with the feature channel as fallback: the level colors alone flatten is run
+// again on the analyses with it, and the cracks stay (sharpness about 0.7 without, 0.9 with, as
+// GIMP cracked at 256^2).
+TEST(TextureOptimization, FeatureChannelKeepsAFlatBackgroundsCracks) {
+  const std::optional<RealCase> real = realCase("Stone/cracked.pat", 128, 96);
+  TS_REQUIRE_DATA(real);
+  const auto& [exemplar, analyses, start] = *real;
+  const TextureOptimizationOptions options;
+  int calls = 0;
+  auto featureAnalyses = [&] {
+    ++calls;
+    std::vector<ExemplarAnalysis> made;
+    for (const AnalysisOptions& analysisOptions :
+         withFeatureChannel(optimizationAnalysisOptions(options), exemplar, kOptimizationFeatureWeight))
+      made.push_back(analyzeExemplar(exemplar, analysisOptions));
+    return made;
+  };
+  const TextureOptimizationResult colorsOnly = optimizeTexture(analyses, options, 96, 96, noProgress(), &start);
+  const TextureOptimizationResult featured =
+      optimizeTexture(analyses, options, 96, 96, noProgress(), &start, featureAnalyses);
+  EXPECT_EQ(calls, 1);
+  EXPECT_GT(featured.featureLevels, 0);
+  EXPECT_LT(featured.undoneLevels, colorsOnly.undoneLevels);
+  const detail::FlatPatchShare flatness(analyses.back().levels.back(), analyses.back().colorChannels);
+  auto flatShare = [&](const SourceCoordinates& coords) {
+    return flatness.of(coords.pixelIndices(exemplar.width), coords.width, coords.height);
+  };
+  EXPECT_LE(flatShare(featured.coords), flatShare(start) + options.collapseTolerance);
+  const MetricOptions metrics{.periodicitySamples = 100};
+  const double with = evaluateImage(exemplar, featured.colors, metrics).sharpness;
+  const double without = evaluateImage(exemplar, colorsOnly.colors, metrics).sharpness;
+  EXPECT_GT(with, without + 0.1) << "with " << with << " without " << without;
+  std::printf("cracked sharpness: colors only %.2f (%d levels undone), feature channel %.2f (%d levels)\n", without,
+              colorsOnly.undoneLevels, with, featured.featureLevels);
+}
+
+// An exemplar whose levels the guard keeps never asks for the feature channel: the same bits.
+TEST(TextureOptimization, FeatureChannelIsOnlyMadeWhenALevelCollapses) {
+  const Fixture& fixture = discreteFixture();
+  int calls = 0;
+  auto featureAnalyses = [&] {
+    ++calls;
+    return std::vector<ExemplarAnalysis>{};
+  };
+  const TextureOptimizationResult result =
+      optimizeTexture(fixture.analyses, fixture.options, 64, 64, noProgress(), nullptr, featureAnalyses);
+  EXPECT_EQ(calls, 0);
+  EXPECT_EQ(result.featureLevels, 0);
+  EXPECT_EQ(result.coords.xy, fixture.run().coords.xy);
+}
+
+TEST(TextureOptimization, WithFeatureChannelMarksDistinctiveColorsOnly) {
+  TextureOptimizationOptions options;
+  const std::vector<AnalysisOptions> plain = optimizationAnalysisOptions(options);
+  Image flat(32, 32, 3);
+  for (float& value : flat.pixels) value = 0.5f;
+  EXPECT_TRUE(withFeatureChannel(plain, flat, 0.5f).front().featureMask.empty());  // no distinctive colors
+  const Image pattern = test::makeTestPattern(32, 32);
+  EXPECT_TRUE(withFeatureChannel(plain, pattern, 0.0f).front().featureMask.empty());
+  const std::vector<AnalysisOptions> featured = withFeatureChannel(plain, pattern, 0.5f);
+  ASSERT_EQ(featured.size(), plain.size());
+  for (const AnalysisOptions& analysis : featured) {
+    EXPECT_EQ(analysis.featureMask.width, 32);
+    EXPECT_EQ(analysis.featureWeight, 0.5f);
+  }
+  test::expectParameterError([&] { withFeatureChannel(plain, pattern, -1.0f); }, "feature weight");
+}
+
 TEST(TextureOptimization, LeastSquaresBlendsAndHasNoCoordinates) {
   static const Fixture fixture(OptimizationSolver::LeastSquares);
   TextureOptimizationResult result = fixture.run();

@@ -2,8 +2,8 @@
 // Distinctive colors: the ones farther from an image's per-channel median color than all but a
 // given share of its pixels. On a flat-background exemplar they are its sparse features (cracks,
 // veins, mortar); elsewhere the ends of its color distribution. Surface synthesis counts them
-// (its levels must not lose them) and marks them as the exemplar's features (their signed
-// distance becomes a feature channel, feature_distance.h).
+// (its levels must not lose them), and surface and 2D optimization mark them as the exemplar's
+// features (their signed distance becomes a feature channel, feature_distance.h).
 #include <vector>
 
 #include "texsynth/core/image.h"
@@ -25,6 +25,10 @@ class DistinctiveColors {
   int channels_;
   float threshold_ = 0;
 };
+
+// The share of an exemplar's pixels that count as distinctive in synthesis: surface synthesis's
+// level measures, and the feature channel of surface and 2D optimization.
+constexpr int kDistinctivePercent = 20;
 
 // 1 where a pixel of `exemplar` (all its channels) is distinctive at `percent`, 0 elsewhere; an
 // empty image where no pixel or every pixel is (a flat exemplar has no features).

@@ -7,13 +7,10 @@
 
 #include "texsynth/core/math.h"
 #include "texsynth/exemplar/analysis.h"
+#include "texsynth/exemplar/distinctive_colors.h"
 #include "texsynth/surface/surface_stencil.h"
 
 namespace texsynth {
-
-// The share of an exemplar's pixels that are distinctive (distinctive_colors.h) in surface
-// synthesis: its measures and its feature channel.
-constexpr int kDistinctivePercent = 20;
 
 struct SurfaceLevelMeasures {
   // The share of vertices whose stencil (their own colors, not resampled) has a lower standard

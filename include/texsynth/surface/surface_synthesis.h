@@ -140,12 +140,9 @@ inline constexpr int kSurfaceIterations = 3;
 inline constexpr float kSurfaceFeatureWeight = 0.5f;
 
 // The analyses synthesizeSurface reads: optimizationAnalysisOptions(options), each with the
-// feature channel of Lefebvre & Hoppe 2006 made from the exemplar's distinctive colors
-// (distinctive_colors.h; their signed distance, feature_distance.h) at `featureWeight` (colors in
-// 0..1; 0 = none, as for a flat exemplar, which has no distinctive colors). Matching a colour and
-// its distance to the nearest feature keeps thin features (cracks, veins, mortar) that colours
-// alone let the background replace: a neighbourhood a pixel off a crack pays little for its
-// misregistration in the smooth distance, one far from any crack pays for the crack it lacks.
+// feature channel of Lefebvre & Hoppe 2006 at `featureWeight` (withFeatureChannel,
+// image/texture_optimization.h; 0 = none). On a mesh every level reads it from the start: the
+// start's and refinement's measures keep the distinctive colors (surface_level_measures.h).
 std::vector<AnalysisOptions> surfaceAnalysisOptions(const Image& exemplar, const TextureOptimizationOptions& options,
                                                     float featureWeight = kSurfaceFeatureWeight);
 
