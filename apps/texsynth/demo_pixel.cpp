@@ -63,11 +63,14 @@ json demoPixelSynthesis(const Image& exemplar, const ExemplarAnalysis& analysis,
     analyses.push_back(analyzeExemplarCached(exemplar, analysisOptions, cacheDirectory));
   section["optimize_analysis_seconds"] = secondsSince(start);
   start = std::chrono::steady_clock::now();
-  const TextureOptimizationResult result = optimizeTexture(analyses, options, kSide, kSide, noProgress(), &coords);
+  const TextureOptimizationResult result = optimizeTexture(analyses, options, kSide, kSide, noProgress(), &coords,
+                                                           cachedFeatureAnalyses(exemplar, options, cacheDirectory));
   const double optimizeSeconds = secondsSince(start);  // after the parallel start, which it reuses
   const Image& optimized = result.colors;
   section["optimize"] = metricsJson(evaluateImage(exemplar, optimized, metricOptions));
   section["optimize"]["seconds"] = optimizeSeconds;
+  section["optimize"]["undone_levels"] = result.undoneLevels;
+  section["optimize"]["feature_levels"] = result.featureLevels;
   // The same coordinates with crisp cuts (--seam-blend 0).
   const Image crisp = lookupColors(exemplar, result.coords);
   section["optimize_crisp"] = metricsJson(evaluateImage(exemplar, crisp, metricOptions));
@@ -106,7 +109,12 @@ std::string pixelMarkdown(const json& pixel, const json& tiling) {
         "coherence is near 0, but its lattice (a shifted repeat of the same content) is near 1. Coherence p90 is the "
         "worst tenth of the output's patches, where seams show. The optimizer's "
         "exemplar analyses took "
-     << fixed3(pixel["optimize_analysis_seconds"]) << " s (cached for the next run).\n\n";
+     << fixed3(pixel["optimize_analysis_seconds"])
+     << " s (cached for the next run). Levels undone by the collapse "
+        "guard (their E+M steps left them flatter than their start): "
+     << pixel["optimize"]["undone_levels"] << "; levels run with the feature channel, which the guard falls back to "
+     << "on a flat-background exemplar whose thin features colors alone lose (GIMP cracked): "
+     << pixel["optimize"]["feature_levels"] << ".\n\n";
   md << "![crisp cuts, feathered seams](pixel_seams.png)\n\nA corner of the optimize output magnified " << kSeamMagnify
      << "x: left with crisp cuts where two exemplar pieces meet (`--seam-blend 0`, the row above), right as "
         "written, the seams feathered over 1.5 pixels (`--seam-blend`); pixels inside a piece keep their exact "

@@ -109,18 +109,9 @@ Image synthesizeOptimized(const Image& exemplar, const ImageArgs& args, int widt
     start = parallelOptimizationStart(analysis, parallel, analyses, options, width, height, *progress);
   }
   if (args.start == "pixels") options.start = OptimizationStart::RandomPixels;
-  // The feature channel's analyses only for an exemplar whose levels colors alone let collapse.
-  auto featureAnalyses = [&] {
-    const std::vector<AnalysisOptions> plain = optimizationAnalysisOptions(options);
-    const std::vector<AnalysisOptions> featured = withFeatureChannel(plain, exemplar, kOptimizationFeatureWeight);
-    std::vector<ExemplarAnalysis> made;
-    if (featured.front().featureMask.empty()) return made;  // no distinctive colors
-    for (const AnalysisOptions& analysisOptions : featured)
-      made.push_back(analyzeExemplarCached(exemplar, analysisOptions, defaultCacheDirectory(), *progress));
-    return made;
-  };
   TextureOptimizationResult result =
-      optimizeTexture(analyses, options, width, height, *progress, start ? &*start : nullptr, featureAnalyses);
+      optimizeTexture(analyses, options, width, height, *progress, start ? &*start : nullptr,
+                      cachedFeatureAnalyses(exemplar, options, defaultCacheDirectory(), *progress));
   if (!args.coords.empty()) writeImage(args.coords, coordinateImage(result.coords));
 
   json iterations = json::array();

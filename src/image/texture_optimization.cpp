@@ -8,6 +8,7 @@
 #include "optimization_steps.h"
 #include "texsynth/core/parallel.h"
 #include "texsynth/core/random.h"
+#include "texsynth/exemplar/analysis_cache.h"
 #include "texsynth/exemplar/distinctive_colors.h"
 #include "texsynth/image/flat_patch_share.h"
 #include "texsynth/image/seam_blend.h"
@@ -273,6 +274,19 @@ std::vector<AnalysisOptions> withFeatureChannel(std::vector<AnalysisOptions> ana
     analysis.featureWeight = weight;
   }
   return analyses;
+}
+
+FeatureAnalyses cachedFeatureAnalyses(const Image& exemplar, const TextureOptimizationOptions& options,
+                                      std::string cacheDirectory, Progress& progress) {
+  return [&exemplar, options, cacheDirectory = std::move(cacheDirectory), &progress] {
+    std::vector<ExemplarAnalysis> made;
+    const std::vector<AnalysisOptions> featured =
+        withFeatureChannel(optimizationAnalysisOptions(options), exemplar, kOptimizationFeatureWeight);
+    if (featured.front().featureMask.empty()) return made;  // no distinctive colors
+    for (const AnalysisOptions& analysisOptions : featured)
+      made.push_back(analyzeExemplarCached(exemplar, analysisOptions, cacheDirectory, progress));
+    return made;
+  };
 }
 
 TextureOptimizationResult optimizeTexture(std::span<const ExemplarAnalysis> analyses,

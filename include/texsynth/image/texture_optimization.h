@@ -161,6 +161,11 @@ inline constexpr float kOptimizationFeatureWeight = 0.5f;
 // most exemplars never need it. Returns none for an exemplar without distinctive colors.
 using FeatureAnalyses = std::function<std::vector<ExemplarAnalysis>()>;
 
+// FeatureAnalyses for `exemplar` and `options` through the analysis cache in `cacheDirectory`
+// (analysis_cache.h), reporting to `progress`; `exemplar` and `progress` must outlive it.
+FeatureAnalyses cachedFeatureAnalyses(const Image& exemplar, const TextureOptimizationOptions& options,
+                                      std::string cacheDirectory, Progress& progress = noProgress());
+
 // The start optimizeTexture reads best: parallel synthesis (`parallelAnalysis`, `parallel`)
 // run only up to the level of the exemplar's stack that optimization starts at, on that level's
 // grid (the finer levels, which the optimization redoes, are never synthesized). Throws what
