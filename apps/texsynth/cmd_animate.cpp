@@ -116,9 +116,7 @@ void runImageAnimation(const CLI::App& parser, const AnimateArgs& args, const Gl
                          : std::min(synthesis.levels, defaultStackLevelCount(exemplar.width, exemplar.height));
   auto progress = makeProgress(globals);
   const std::string cache = defaultCacheDirectory();
-  std::vector<ExemplarAnalysis> analyses;
-  for (const AnalysisOptions& options : optimizationAnalysisOptions(synthesis))
-    analyses.push_back(analyzeExemplarCached(exemplar, options, cache, *progress));
+  const std::vector<ExemplarAnalysis> analyses = cachedOptimizationAnalyses(exemplar, synthesis, cache, *progress);
   const ExemplarAnalysis parallel = analyzeExemplarCached(exemplar, {}, cache, *progress);
   json report = {{"exemplar", args.exemplar},
                  {"exemplar_size", {exemplar.width, exemplar.height}},

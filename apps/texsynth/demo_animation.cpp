@@ -53,9 +53,7 @@ Run animate(std::span<const ExemplarAnalysis> analyses, const ExemplarAnalysis& 
 json demoAnimation(const Image& exemplar, const std::string& exemplarName, std::uint64_t seed,
                    const std::string& cacheDirectory, const std::function<std::string(const std::string&)>& out) {
   TextureOptimizationOptions synthesis;
-  std::vector<ExemplarAnalysis> analyses;
-  for (const AnalysisOptions& options : optimizationAnalysisOptions(synthesis))
-    analyses.push_back(analyzeExemplarCached(exemplar, options, cacheDirectory));
+  const std::vector<ExemplarAnalysis> analyses = cachedOptimizationAnalyses(exemplar, synthesis, cacheDirectory);
   const ExemplarAnalysis parallel = analyzeExemplarCached(exemplar, {}, cacheDirectory);
   const ImageFlow flow = ImageFlow::parse(kFlow, kSide, kSide);
   const float defaultLambda = FlowAnimationOptions{}.coherence;

@@ -98,9 +98,8 @@ Image synthesizeOptimized(const Image& exemplar, const ImageArgs& args, int widt
                          "the least-squares solver blends colors, so it has no source coordinates; use "
                          "--solver discrete");
   auto progress = makeProgress(globals);
-  std::vector<ExemplarAnalysis> analyses;
-  for (const AnalysisOptions& analysisOptions : optimizationAnalysisOptions(options))
-    analyses.push_back(analyzeExemplarCached(exemplar, analysisOptions, defaultCacheDirectory(), *progress));
+  const std::vector<ExemplarAnalysis> analyses =
+      cachedOptimizationAnalyses(exemplar, options, defaultCacheDirectory(), *progress);
   std::optional<SourceCoordinates> start;  // --start parallel: the parallel method's result, at its defaults
   if (args.start == "parallel" && options.solver == OptimizationSolver::Discrete) {
     ParallelSynthesisOptions parallel;

@@ -42,6 +42,8 @@ void validate(const ExemplarAnalysis& analysis, const ParallelSynthesisOptions& 
   requireFiniteAtLeast("jitter", options.defaultJitter, 0.0f);
   for (float r : options.jitter) requireFiniteAtLeast("jitter", r, 0.0f);
   requireFiniteAtLeast("coarsestFootprint", options.coarsestFootprint, 0.0f);
+  if (!(options.continuationBias >= 0.0f && options.continuationBias < 1.0f))
+    throw ParameterError("continuationBias", "must be in [0, 1), got " + std::to_string(options.continuationBias));
   if (options.startPasses < 0)
     throw ParameterError("startPasses", "must be >= 0, got " + std::to_string(options.startPasses));
 }
@@ -106,7 +108,8 @@ SourceCoordinates synthesizeParallelLevelCoordinates(const ExemplarAnalysis& ana
           tilingCoordinates(start.x0, start.y0, start.width, start.height, spacing, analysis.width, analysis.height);
     const float strength = options.jitter.empty() ? options.defaultJitter : options.jitter[l];
     jitterCoordinates(coords, l, spacing, strength, options.seed, analysis.width, analysis.height);
-    for (int pass = 0; pass < passes(l); ++pass) coords = correctCoordinates(analysis, l, coords, options.subpassGrid);
+    for (int pass = 0; pass < passes(l); ++pass)
+      coords = correctCoordinates(analysis, l, coords, options.subpassGrid, options.continuationBias);
     TS_CHECK(coords.x0 == corrected[l].x0 && coords.width == corrected[l].width);
     TS_CHECK(coords.y0 == corrected[l].y0 && coords.height == corrected[l].height);
     progress.advance(1);

@@ -75,7 +75,8 @@ constexpr int kOffsets[9][2] = {{0, 0}, {-1, -1}, {0, -1}, {1, -1}, {-1, 0}, {1,
 // One subpass: pixels of `after`'s region with (x mod s, y mod s) = (px, py) are corrected
 // from `before`, the others copied.
 void correctSubpass(const ExemplarAnalysis& analysis, int level, const SourceCoordinates& before,
-                    SourceCoordinates& after, int s, int px, int py) {
+                    SourceCoordinates& after, int s, int px, int py, float continuationBias) {
+  const float continuationScale = 1.0f - continuationBias;
   const int spacing = analysis.levels[level].spacing;
   const int dimension = analysis.levels[level].pca.outputDimension;
   const int k = analysis.similarCount;
@@ -106,7 +107,8 @@ void correctSubpass(const ExemplarAnalysis& analysis, int level, const SourceCoo
           proposed[proposals++] = source;
           const std::int32_t* similar = analysis.similarAt(level, source);
           for (int i = 0; i < k; ++i) {
-            const float distance = projector.distanceTo(query.data(), similar[i]);
+            float distance = projector.distanceTo(query.data(), similar[i]);
+            if (i == 0) distance *= continuationScale;
             if (distance < best) best = distance, bestPixel = similar[i];
           }
         }
@@ -124,7 +126,7 @@ int correctionMargin(const ExemplarAnalysis& analysis, int level, int passes, in
 }
 
 SourceCoordinates correctCoordinates(const ExemplarAnalysis& analysis, int level, const SourceCoordinates& coords,
-                                     int subpassGrid) {
+                                     int subpassGrid, float continuationBias) {
   TS_CHECK(subpassGrid >= 1);
   const int r = readRadius(analysis, level);
   const int margin = correctionMargin(analysis, level, 1, subpassGrid);
@@ -132,7 +134,7 @@ SourceCoordinates correctCoordinates(const ExemplarAnalysis& analysis, int level
   SourceCoordinates current = coords;
   for (const auto& subpass : subpassOrder(subpassGrid)) {
     SourceCoordinates next(current.x0 + r, current.y0 + r, current.width - 2 * r, current.height - 2 * r);
-    correctSubpass(analysis, level, current, next, subpassGrid, subpass[0], subpass[1]);
+    correctSubpass(analysis, level, current, next, subpassGrid, subpass[0], subpass[1], continuationBias);
     current = std::move(next);
   }
   return current;

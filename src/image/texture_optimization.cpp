@@ -227,12 +227,17 @@ SourceCoordinates parallelOptimizationStart(const ExemplarAnalysis& parallelAnal
   validateAnalyses(analyses, options);
   const LevelPlan plan = planLevels(analyses, options, width, height);
   const int spacing = analyses.back().levels[std::size_t(plan.first)].spacing;
+  // Without the continuation bias: the optimization rearranges the start's patches anyway, and
+  // 12 GIMP exemplars at 256^2 end 1% less coherent from a biased start (90th percentile at or
+  // below G'MIC's on 5 instead of 7).
+  ParallelSynthesisOptions start = parallel;
+  start.continuationBias = 0;
   for (int level = 0; level < parallelAnalysis.levelCount(); ++level)
     if (parallelAnalysis.levels[std::size_t(level)].spacing == spacing)
-      return synthesizeParallelLevelCoordinates(parallelAnalysis, parallel, level, 0, 0,
+      return synthesizeParallelLevelCoordinates(parallelAnalysis, start, level, 0, 0,
                                                 plan.widths[std::size_t(plan.first)],
                                                 plan.heights[std::size_t(plan.first)], progress);
-  return synthesizeParallelCoordinates(parallelAnalysis, parallel, 0, 0, width, height, progress);
+  return synthesizeParallelCoordinates(parallelAnalysis, start, 0, 0, width, height, progress);
 }
 
 std::string optimizationSolverName(OptimizationSolver solver) {
@@ -276,16 +281,31 @@ std::vector<AnalysisOptions> withFeatureChannel(std::vector<AnalysisOptions> ana
   return analyses;
 }
 
+namespace {
+
+std::vector<ExemplarAnalysis> analyzedCached(const Image& exemplar, std::span<const AnalysisOptions> wanted,
+                                             const std::string& cacheDirectory, Progress& progress) {
+  std::vector<ExemplarAnalysis> analyses;
+  for (const AnalysisOptions& analysisOptions : wanted)
+    analyses.push_back(analyzeExemplarCached(exemplar, analysisOptions, cacheDirectory, progress));
+  return analyses;
+}
+
+}  // namespace
+
+std::vector<ExemplarAnalysis> cachedOptimizationAnalyses(const Image& exemplar,
+                                                         const TextureOptimizationOptions& options,
+                                                         const std::string& cacheDirectory, Progress& progress) {
+  return analyzedCached(exemplar, optimizationAnalysisOptions(options), cacheDirectory, progress);
+}
+
 FeatureAnalyses cachedFeatureAnalyses(const Image& exemplar, const TextureOptimizationOptions& options,
                                       std::string cacheDirectory, Progress& progress) {
   return [&exemplar, options, cacheDirectory = std::move(cacheDirectory), &progress] {
-    std::vector<ExemplarAnalysis> made;
     const std::vector<AnalysisOptions> featured =
         withFeatureChannel(optimizationAnalysisOptions(options), exemplar, kOptimizationFeatureWeight);
-    if (featured.front().featureMask.empty()) return made;  // no distinctive colors
-    for (const AnalysisOptions& analysisOptions : featured)
-      made.push_back(analyzeExemplarCached(exemplar, analysisOptions, cacheDirectory, progress));
-    return made;
+    if (featured.front().featureMask.empty()) return std::vector<ExemplarAnalysis>{};  // no distinctive colors
+    return analyzedCached(exemplar, featured, cacheDirectory, progress);
   };
 }
 

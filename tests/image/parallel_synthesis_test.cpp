@@ -154,6 +154,33 @@ TEST(ParallelSynthesis, RandomStartLeavesNoLattice) {
   std::printf("lattice: tiled start %.3f, random start %.3f\n", tiledStart, randomStart);
 }
 
+// The share of pixels whose right neighbor continues their exemplar patch: how whole the
+// output's patches are.
+double continuedShare(const SourceCoordinates& coords, int exemplarWidth) {
+  int continued = 0;
+  for (int y = coords.y0; y < coords.y0 + coords.height; ++y)
+    for (int x = coords.x0; x + 1 < coords.x0 + coords.width; ++x)
+      continued += coords.at(x + 1, y)[0] == (coords.at(x, y)[0] + 1) % exemplarWidth &&
+                   coords.at(x + 1, y)[1] == coords.at(x, y)[1];
+  return double(continued) / (double(coords.width - 1) * coords.height);
+}
+
+// The continuation bias grows whole patches and keeps more of the exemplar (bark, 64^2 at 128^2:
+// the share continued 0.60 -> 0.81 measured).
+TEST(ParallelSynthesis, ContinuationBiasKeepsPatchesWhole) {
+  auto path = gimpPattern("Wood/bark.pat");
+  TS_REQUIRE_DATA(path);
+  const Image exemplar = test::loadPatternRgb(*path, 64);
+  const ExemplarAnalysis analysis = analyzeExemplar(exemplar);
+  auto continued = [&](float bias) {
+    return continuedShare(synthesizeParallelCoordinates(analysis, {.continuationBias = bias}, 0, 0, 128, 128),
+                          analysis.width);
+  };
+  const double plain = continued(0.0f), biased = continued(0.4f);
+  EXPECT_GT(biased, plain + 0.1) << "plain " << plain << " biased " << biased;
+  std::printf("continued share: plain %.3f, biased %.3f\n", plain, biased);
+}
+
 TEST(ParallelSynthesis, StartsAtTheCoarsestLevelThatFitsTheExemplar) {
   const ExemplarAnalysis& analysis = patternAnalysis();  // 32^2, N = 5
   EXPECT_EQ(firstSynthesizedLevel(analysis, 0.0f), 0);
@@ -176,6 +203,9 @@ TEST(ParallelSynthesis, RejectsBadParameters) {
   test::expectParameterError([&] { synthesizeParallel(analysis, {.coarsestFootprint = -1.0f}, 0, 0, 8, 8); },
                              "coarsestFootprint");
   test::expectParameterError([&] { synthesizeParallel(analysis, {.startPasses = -1}, 0, 0, 8, 8); }, "startPasses");
+  for (float bias : {-0.1f, 1.0f, std::nanf("")})
+    test::expectParameterError([&] { synthesizeParallel(analysis, {.continuationBias = bias}, 0, 0, 8, 8); },
+                               "continuationBias");
   std::vector<float> jitter(std::size_t(analysis.levelCount()), 0.4f);
   jitter[1] = std::nanf("");
   test::expectParameterError([&] { synthesizeParallel(analysis, {.jitter = jitter}, 0, 0, 8, 8); }, "jitter");

@@ -156,6 +156,13 @@ std::vector<AnalysisOptions> withFeatureChannel(std::vector<AnalysisOptions> ana
 // 0.61-0.75 -> 0.94-0.96, coherence 4.7-5.6 -> 2.6-2.9 (1.0: the same within noise).
 inline constexpr float kOptimizationFeatureWeight = 0.5f;
 
+// The analyses optimizeTexture reads (optimizationAnalysisOptions(options)) for `exemplar`,
+// through the analysis cache in `cacheDirectory` (analysis_cache.h).
+std::vector<ExemplarAnalysis> cachedOptimizationAnalyses(const Image& exemplar,
+                                                         const TextureOptimizationOptions& options,
+                                                         const std::string& cacheDirectory,
+                                                         Progress& progress = noProgress());
+
 // The analyses of optimizationAnalysisOptions with the feature channel (withFeatureChannel at
 // kOptimizationFeatureWeight), made on first use: an analysis takes seconds the first time, and
 // most exemplars never need it. Returns none for an exemplar without distinctive colors.
