@@ -308,8 +308,8 @@ Command registerImageCommand(CLI::App& app, const GlobalOptions& globals) {
                   "way, so that optimize's coordinates re-apply to the image it wrote; pass 0 for parallel's")
       ->check(finiteIn(0, kMaxSeamBlend));
   sub->add_option("--start", args->start,
-                  "optimize (discrete): start from the parallel method's result (keeps every part of the exemplar, "
-                  "no lattice), from random exemplar patches, or from random pixels (Han et al.)")
+                  "optimize (discrete): start from parallel synthesis as Lefebvre & Hoppe 2005 publish it (keeps every "
+                  "part of the exemplar, no lattice), from random exemplar patches, or from random pixels (Han et al.)")
       ->capture_default_str()
       ->check(CLI::IsMember({"parallel", "patches", "pixels"}));
   sub->add_option("-k,--similar", args->similarCount,

@@ -100,7 +100,9 @@ Image synthesizeOptimized(const Image& exemplar, const ImageArgs& args, int widt
   auto progress = makeProgress(globals);
   const std::vector<ExemplarAnalysis> analyses =
       cachedOptimizationAnalyses(exemplar, options, defaultCacheDirectory(), *progress);
-  std::optional<SourceCoordinates> start;  // --start parallel: the parallel method's result, at its defaults
+  // --start parallel: the parallel method at its defaults, less its continuation bias
+  // (parallelOptimizationStart), run up to the first level optimized.
+  std::optional<SourceCoordinates> start;
   if (args.start == "parallel" && options.solver == OptimizationSolver::Discrete) {
     ParallelSynthesisOptions parallel;
     parallel.seed = globals.seed;
